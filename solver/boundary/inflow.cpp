@@ -1,0 +1,28 @@
+#include "boundary/inflow.hpp"
+
+#include "core/parallel.hpp"
+
+#include <cmath>
+
+namespace mrsph {
+
+Real ParabolicInflowProfile::ramp(Real t) const {
+  if (ramp_time <= 0.0 || t >= ramp_time) return 1.0;
+  return 0.5 * (1.0 - std::cos(kPi * t / ramp_time));
+}
+
+Vec2 ParabolicInflowProfile::velocity(const Vec2& p, Real t) const {
+  const Real y = p.y() - channel_bottom;
+  const Real H = channel_height;
+  const Real u = 1.5 * mean_velocity * ramp(t) * 4.0 * y * (H - y) / (H * H);
+  return Vec2(u, 0.0);
+}
+
+void InflowBuffer::apply(FluidParticles& fluid, Real t, const DomainBox& box) const {
+  parallel_for_each(fluid.size(), [&](std::size_t i) {
+    const Vec2 p = box.wrap(fluid.pos[i]);
+    if (region->contains(p)) fluid.vel[i] = profile.velocity(p, t);
+  });
+}
+
+}  // namespace mrsph

@@ -1,0 +1,35 @@
+// Inflow buffer (METHOD.md section 7): in a periodic channel, the fluid particles inside the
+// buffer region have their velocity reset to a prescribed profile u(y, t) after every acoustic
+// step; density and pressure are left alone.
+//   parabolic channel (Turek & Hron 2006, with the factor 4 the paper drops, CASES.md section 1):
+//     u_x = 1.5 Ubar(t) 4 (y - y0)(H - (y - y0)) / H^2,
+//     Ubar(t) = U0 (1 - cos(pi t / t_ramp)) / 2 for t < t_ramp, else U0;  u_y = 0.
+#pragma once
+
+#include "geometry/shapes.hpp"
+#include "neighbor/domain_box.hpp"
+#include "particles/fluid_particles.hpp"
+
+#include <memory>
+
+namespace mrsph {
+
+struct ParabolicInflowProfile {
+  Real channel_bottom = 0.0;  // y0
+  Real channel_height = 1.0;  // H
+  Real mean_velocity = 1.0;   // U0
+  Real ramp_time = 0.0;       // t_ramp; 0: no ramp
+
+  Real ramp(Real t) const;
+  Vec2 velocity(const Vec2& p, Real t) const;
+};
+
+struct InflowBuffer {
+  ShapePtr region;
+  ParabolicInflowProfile profile;
+
+  // Positions are tested in their periodic image inside the box.
+  void apply(FluidParticles& fluid, Real t, const DomainBox& box) const;
+};
+
+}  // namespace mrsph

@@ -1,0 +1,109 @@
+#include "fluid/acoustic_step.hpp"
+
+#include "core/parallel.hpp"
+
+#include <algorithm>
+
+namespace mrsph {
+
+void acoustic_first_half(FluidBody& fluid, const NeighborList& inner, std::vector<FluidContact>& contacts, Real dt,
+                         const Vec2& body_acceleration) {
+  FluidParticles& f = fluid.particles;
+  const EquationOfState& eos = fluid.material.eos;
+  const RiemannDissipation& riemann = fluid.riemann;
+
+  parallel_for_each(f.size(), [&](std::size_t i) {
+    f.rho[i] += 0.5 * dt * f.drho_dt[i];
+    f.p[i] = eos.pressure(f.rho[i]);
+    f.vol[i] = f.mass[i] / f.rho[i];
+    f.pos[i] += 0.5 * dt * f.vel[i];
+  });
+  for (FluidContact& c : contacts) c.pair_pressure_force.resize(c.pairs.pair_count());
+
+  parallel_for_each(f.size(), [&](std::size_t i) {
+    const Real p_i = f.p[i], rho_i = f.rho[i], vol_i = f.vol[i];
+    Vec2 force = Vec2::Zero();
+    Real drho = 0.0;
+    for (const Neighbor& n : inner.of(i)) {
+      force -= (vol_i * f.vol[n.j] * (p_i + f.p[n.j]) * n.dW) * n.e;
+      if (riemann.continuity) drho += f.vol[n.j] * riemann.continuity_term(p_i, f.p[n.j]) * n.dW;
+    }
+    const Vec2 acc_prior = f.force_prior[i] / f.mass[i] + body_acceleration;
+    for (FluidContact& c : contacts) {
+      const RealArray& vol = *c.boundary.vol;
+      const Vec2Array& abar = *c.boundary.acc_ave;
+      const Index first = c.pairs.offset(i);
+      const auto list = c.pairs.of(i);
+      for (std::size_t k = 0; k < list.size(); ++k) {
+        const Neighbor& n = list[k];
+        const Vec2 r_ai = -n.r * n.e;  // r_a - r_i
+        const Real p_d = p_i + rho_i * std::max(Real(0), (acc_prior - abar[n.j]).dot(r_ai));
+        const Vec2 pair = -(vol_i * vol[n.j] * (p_i + p_d) * n.dW) * n.e;
+        c.pair_pressure_force[first + k] = pair;
+        force += pair;
+        if (riemann.continuity) drho += vol[n.j] * riemann.continuity_term(p_i, p_d) * n.dW;
+      }
+    }
+    f.pressure_force[i] = force;
+    f.drho_dt[i] = rho_i * drho;
+    f.vel[i] += dt * ((force + f.dissipation_force[i] + f.force_prior[i]) / f.mass[i] + body_acceleration);
+  });
+}
+
+void acoustic_second_half(FluidBody& fluid, const NeighborList& inner, std::vector<FluidContact>& contacts, Real dt) {
+  FluidParticles& f = fluid.particles;
+  const RiemannDissipation& riemann = fluid.riemann;
+
+  parallel_for_each(f.size(), [&](std::size_t i) { f.pos[i] += 0.5 * dt * f.vel[i]; });
+  for (FluidContact& c : contacts)
+    c.pair_dissipation_force.assign(riemann.momentum ? c.pairs.pair_count() : 0, Vec2::Zero());
+
+  parallel_for_each(f.size(), [&](std::size_t i) {
+    const Vec2 v_i = f.vel[i];
+    const Real vol_i = f.vol[i];
+    Real divergence = 0.0;
+    Vec2 dissipation = Vec2::Zero();
+    for (const Neighbor& n : inner.of(i)) {
+      const Real u = (v_i - f.vel[n.j]).dot(n.e);
+      divergence += f.vol[n.j] * u * n.dW;
+      if (riemann.momentum) dissipation += (vol_i * f.vol[n.j] * riemann.momentum_coefficient(u) * n.dW) * n.e;
+    }
+    for (FluidContact& c : contacts) {
+      const RealArray& vol = *c.boundary.vol;
+      const Vec2Array& vbar = *c.boundary.vel_ave;
+      const Vec2Array& normal = *c.boundary.normal;
+      const Index first = c.pairs.offset(i);
+      const auto list = c.pairs.of(i);
+      for (std::size_t k = 0; k < list.size(); ++k) {
+        const Neighbor& n = list[k];
+        const Vec2 relative = v_i - vbar[n.j];
+        divergence += vol[n.j] * 2.0 * relative.dot(n.e) * n.dW;
+        if (riemann.momentum) {
+          const Vec2 n_f = n.e.dot(normal[n.j]) >= 0.0 ? normal[n.j] : Vec2(-normal[n.j]);
+          const Real u = 2.0 * relative.dot(n_f);
+          const Vec2 pair = (vol_i * vol[n.j] * riemann.momentum_coefficient(u) * n.dW) * n_f;
+          c.pair_dissipation_force[first + k] = pair;
+          dissipation += pair;
+        }
+      }
+    }
+    f.drho_dt[i] += f.rho[i] * divergence;
+    f.rho[i] += 0.5 * dt * f.drho_dt[i];
+    f.dissipation_force[i] = dissipation;
+  });
+
+  for (FluidContact& c : contacts) {
+    c.boundary_dissipation_reaction.assign(c.pairs_of_boundary.size(), Vec2::Zero());
+    if (riemann.momentum) accumulate_boundary_reaction(c, c.pair_dissipation_force, c.boundary_dissipation_reaction);
+  }
+}
+
+void accumulate_boundary_reaction(const FluidContact& contact, const Vec2Array& pair_force, Vec2Array& reaction) {
+  parallel_for_each(contact.pairs_of_boundary.size(), [&](std::size_t a) {
+    Vec2 sum = Vec2::Zero();
+    for (Index k : contact.pairs_of_boundary.of(a)) sum -= pair_force[k];
+    reaction[a] += sum;
+  });
+}
+
+}  // namespace mrsph

@@ -1,0 +1,13 @@
+// Density re-initialisation by kernel summation, once per advection step (METHOD.md section 2):
+//   rho_sum,i = (rho0 / sigma0) [ W(0) + sum_j W_ij V0_j / V0_i + sum_a W_ia V_a / V0_i ],
+// with V0 = m / rho0 and sigma0 the lattice number density, so a particle in a full uniform lattice
+// gets exactly rho0. Internal flow: rho = rho_sum. Free surface: rho = max(rho_sum, rho0).
+#pragma once
+
+#include "fluid/fluid_body.hpp"
+
+namespace mrsph {
+
+void reinitialise_density(FluidBody& fluid, const NeighborList& inner, const std::vector<FluidContact>& contacts);
+
+}  // namespace mrsph

@@ -1,0 +1,70 @@
+// A weakly-compressible fluid body: its particles, resolution, material and numerical options.
+#pragma once
+
+#include "core/types.hpp"
+#include "fluid/equation_of_state.hpp"
+#include "fluid/riemann_dissipation.hpp"
+#include "kernel/wendland_c2.hpp"
+#include "neighbor/neighbor_list.hpp"
+#include "particles/boundary_view.hpp"
+#include "particles/fluid_particles.hpp"
+
+#include <string>
+#include <vector>
+
+namespace mrsph {
+
+struct FluidMaterial {
+  EquationOfState eos;
+  Real viscosity = 0.0;  // dynamic viscosity mu (eta in the paper)
+  Real rho0() const { return eos.rho0; }
+  Real sound_speed() const { return eos.c0; }
+};
+
+enum class DensityReinitialisation {
+  Internal,     // rho = rho_sum: confined flow (METHOD.md section 2)
+  FreeSurface,  // rho = max(rho_sum, rho0): a truncated kernel near the surface must not lower rho
+};
+
+struct FluidOptions {
+  DensityReinitialisation density = DensityReinitialisation::Internal;
+  Real transport_velocity_alpha = 0.0;  // 0: no transport-velocity correction
+  Real reference_velocity = 1.0;        // U_ref, a floor for the advection criterion
+  Real advection_cfl = 0.25;            // paper Eq. 32
+  Real acoustic_cfl = 0.6;              // paper Eq. 33
+};
+
+struct FluidBody {
+  std::string name;
+  Real dp;
+  WendlandC2 kernel;
+  FluidMaterial material;
+  FluidOptions options;
+  RiemannDissipation riemann;
+  FluidParticles particles;
+  Real lattice_number_density;  // sigma0 for this dp and h
+
+  FluidBody(std::string body_name, Real spacing, Real h_over_dp)
+      : name(std::move(body_name)), dp(spacing), kernel(h_over_dp * spacing),
+        lattice_number_density(kernel.lattice_number_density(spacing)) {}
+  Real h() const { return kernel.h(); }
+};
+
+// The fluid's view of one boundary body (rigid wall or elastic solid): the pairs within the
+// fluid's kernel support and, for each pair k, the force the boundary exerts on the fluid
+// particle. The boundary feels -force of each of its pairs (Newton's third law, pair by pair).
+struct FluidContact {
+  std::string boundary_name;
+  BoundaryView boundary;
+  NeighborList pairs;                 // fluid particle i -> boundary particles a
+  TransposedContacts pairs_of_boundary;
+  Vec2Array pair_pressure_force;      // written every acoustic step (first half)
+  Vec2Array pair_viscous_force;       // written once per advection step
+  Vec2Array pair_dissipation_force;   // Riemann momentum dissipation, written in the second half
+  // Force on each boundary particle from the dissipation of the previous second half. The fluid
+  // applies that dissipation in the next acoustic step; so does the boundary. Indexed by boundary
+  // particle, so it survives the rebuild of the pair list between advection steps.
+  Vec2Array boundary_dissipation_reaction;
+};
+
+}  // namespace mrsph

@@ -1,0 +1,15 @@
+// Viscous force (paper Eqs. 18 and 22; Morris et al. 1997), once per advection step:
+//   f^v_i = 2 mu V_i sum_j V_j (v_i - v_j) / (r_ij + 0.01 h) dW/dr_ij
+//         + 2 mu V_i sum_a V_a 2 (v_i - vbar_a) / (r_ia + 0.01 h) dW/dr_ia   (no-slip boundary,
+//           mirrored velocity v^d = 2 vbar_a - v_i; METHOD.md section 3)
+// The fluid-fluid and fluid-boundary parts go into F^prior; each boundary pair force is kept so the
+// boundary receives its exact opposite.
+#pragma once
+
+#include "fluid/fluid_body.hpp"
+
+namespace mrsph {
+
+void compute_viscous_force(FluidBody& fluid, const NeighborList& inner, std::vector<FluidContact>& contacts);
+
+}  // namespace mrsph

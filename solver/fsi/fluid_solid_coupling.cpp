@@ -1,0 +1,44 @@
+#include "fsi/fluid_solid_coupling.hpp"
+
+#include "core/parallel.hpp"
+
+namespace mrsph {
+
+void set_force_from_fluid(const FluidContact& contact, SolidParticles& solid) {
+  const bool has_viscous = !contact.pair_viscous_force.empty();
+  parallel_for_each(solid.size(), [&](std::size_t a) {
+    Vec2 force = contact.boundary_dissipation_reaction[a];
+    for (Index k : contact.pairs_of_boundary.of(a)) {
+      force -= contact.pair_pressure_force[k];
+      if (has_viscous) force -= contact.pair_viscous_force[k];
+    }
+    solid.force_prior[a] = force;
+  });
+}
+
+Vec2 total_force_on_boundary(const FluidContact& contact) {
+  Vec2 total = Vec2::Zero();
+  for (const Vec2& f : contact.boundary_dissipation_reaction) total += f;
+  for (const Vec2& f : contact.pair_pressure_force) total -= f;
+  for (const Vec2& f : contact.pair_viscous_force) total -= f;
+  return total;
+}
+
+void begin_kinematics_average(SolidParticles& solid) {
+  parallel_for_each(solid.size(), [&](std::size_t a) { solid.pos_acoustic_start[a] = solid.pos[a]; });
+}
+
+void end_kinematics_average(SolidParticles& solid, Real dt, SolidKinematics mode) {
+  parallel_for_each(solid.size(), [&](std::size_t a) {
+    if (mode == SolidKinematics::Instantaneous) {
+      solid.vel_ave[a] = solid.vel[a];
+      solid.acc_ave[a] = solid.acc[a];
+      return;
+    }
+    const Vec2 v_new = (solid.pos[a] - solid.pos_acoustic_start[a]) / dt;
+    solid.acc_ave[a] = (v_new - solid.vel_ave[a]) / dt;
+    solid.vel_ave[a] = v_new;
+  });
+}
+
+}  // namespace mrsph

@@ -1,0 +1,28 @@
+// Fluid-structure coupling (paper section 3; METHOD.md section 5).
+//  - Forces of the fluid on a boundary body (Eqs. 23-24 with h_F, Eqs. 30-31): each pair force is
+//    computed once, on the fluid side, and the boundary particle receives exactly its negative, so
+//    momentum is exchanged pair by pair. The pressure part changes every acoustic step, the
+//    viscous part once per advection step, the Riemann dissipation part is the one the fluid
+//    applies in the same acoustic step. Their sum is the solid's F^prior, held constant over the
+//    solid sub-steps of the acoustic step.
+//  - Kinematics the fluid sees (Eq. 35): the solid velocity and acceleration averaged over the
+//    acoustic step, vbar = (r^{n+1} - r^n) / dt and abar = (vbar^{n+1} - vbar^n) / dt; or, for
+//    comparison, the instantaneous velocity and acceleration of the last sub-step.
+#pragma once
+
+#include "fluid/fluid_body.hpp"
+#include "simulation/simulation.hpp"
+#include "solid/solid_body.hpp"
+
+namespace mrsph {
+
+// F^prior_a = -sum over pairs (pressure + viscous) + dissipation reaction.
+void set_force_from_fluid(const FluidContact& contact, SolidParticles& solid);
+
+// Total force of the fluid on a boundary body (for drag and lift).
+Vec2 total_force_on_boundary(const FluidContact& contact);
+
+void begin_kinematics_average(SolidParticles& solid);
+void end_kinematics_average(SolidParticles& solid, Real dt, SolidKinematics mode);
+
+}  // namespace mrsph

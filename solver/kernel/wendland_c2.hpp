@@ -1,0 +1,40 @@
+// Wendland C2 kernel in 2D (the paper's "5th-order Wendland"), support radius 2h.
+//   q = r/h,  W(r) = 7/(4 pi h^2) (1 - q/2)^4 (1 + 2q),  dW/dr = -35/(4 pi h^3) q (1 - q/2)^3.
+// Source: Wendland (1995); normalisation for 2D as in METHOD.md section 1.
+#pragma once
+
+#include "core/types.hpp"
+
+namespace mrsph {
+
+class WendlandC2 {
+ public:
+  explicit WendlandC2(Real h);
+
+  Real h() const { return h_; }
+  Real cutoff() const { return 2.0 * h_; }
+  Real W(Real r) const {
+    const Real q = r * inv_h_;
+    if (q >= 2.0) return 0.0;
+    const Real a = 1.0 - 0.5 * q;
+    const Real a2 = a * a;
+    return factor_W_ * a2 * a2 * (1.0 + 2.0 * q);
+  }
+  // dW/dr <= 0.
+  Real dW(Real r) const {
+    const Real q = r * inv_h_;
+    if (q >= 2.0) return 0.0;
+    const Real a = 1.0 - 0.5 * q;
+    return factor_dW_ * q * a * a * a;
+  }
+  Real W0() const { return factor_W_; }
+
+  // Sum of W over an infinite square lattice of spacing dp (origin included): the number density a
+  // particle in a full, uniform neighbourhood sees. sigma0 * dp^2 = 1.0105 for h = 1.3 dp.
+  Real lattice_number_density(Real dp) const;
+
+ private:
+  Real h_, inv_h_, factor_W_, factor_dW_;
+};
+
+}  // namespace mrsph

@@ -1,0 +1,112 @@
+#include "observers/point_observer.hpp"
+
+#include "fsi/fluid_solid_coupling.hpp"
+
+#include <limits>
+#include <stdexcept>
+
+namespace mrsph {
+
+PointObserver::PointObserver(ObserverSpec spec, const Simulation& sim) : spec_(std::move(spec)) {
+  if (spec_.bodies.empty()) throw std::invalid_argument("observer '" + spec_.name + "' names no body");
+  if (spec_.quantity == ObservedQuantity::Force) {
+    target_ = Target::Boundaries;
+    if (!sim.has_fluid()) throw std::invalid_argument("observer '" + spec_.name + "': force needs a fluid");
+    for (const std::string& body : spec_.bodies) {
+      std::size_t k = 0;
+      for (; k < sim.fluid_contacts().size(); ++k)
+        if (sim.fluid_contacts()[k].boundary_name == body) break;
+      if (k == sim.fluid_contacts().size())
+        throw std::invalid_argument("observer '" + spec_.name + "': no wall or solid body named '" + body + "'");
+      contact_indices_.push_back(k);
+    }
+    return;
+  }
+  const std::string& body = spec_.bodies.front();
+  if (sim.has_fluid() && sim.fluid().name == body) {
+    target_ = Target::Fluid;
+    if (spec_.quantity != ObservedQuantity::Velocity && spec_.quantity != ObservedQuantity::Pressure)
+      throw std::invalid_argument("observer '" + spec_.name + "': a fluid body is observed as velocity or pressure");
+    return;
+  }
+  for (std::size_t s = 0; s < sim.solids().size(); ++s) {
+    if (sim.solids()[s].name != body) continue;
+    target_ = Target::Solid;
+    solid_index_ = s;
+    if (spec_.quantity == ObservedQuantity::Pressure)
+      throw std::invalid_argument("observer '" + spec_.name + "': a solid is observed as position, displacement or velocity");
+    const SolidBody& solid = sim.solids()[s];
+    const SolidParticles& p = solid.particles;
+    if (spec_.nearest_particle) {
+      Real best = std::numeric_limits<Real>::infinity();
+      Index best_index = 0;
+      for (std::size_t a = 0; a < p.size(); ++a) {
+        const Real d = (p.pos0[a] - spec_.point).squaredNorm();
+        if (d < best) { best = d; best_index = static_cast<Index>(a); }
+      }
+      particles_ = {best_index};
+      weights_ = {1.0};
+    } else {
+      Real total = 0.0;
+      for (std::size_t a = 0; a < p.size(); ++a) {
+        const Real w = solid.kernel.W((p.pos0[a] - spec_.point).norm()) * p.vol0[a];
+        if (w <= 0.0) continue;
+        particles_.push_back(static_cast<Index>(a));
+        weights_.push_back(w);
+        total += w;
+      }
+      if (particles_.empty())
+        throw std::invalid_argument("observer '" + spec_.name + "': no particle of '" + body + "' within reach of the point");
+      for (Real& w : weights_) w /= total;
+    }
+    return;
+  }
+  throw std::invalid_argument("observer '" + spec_.name + "': no fluid or solid body named '" + body + "'");
+}
+
+std::vector<std::string> PointObserver::columns() const {
+  switch (spec_.quantity) {
+    case ObservedQuantity::Position: return {"x", "y"};
+    case ObservedQuantity::Displacement: return {"dx", "dy"};
+    case ObservedQuantity::Velocity: return {"u", "v"};
+    case ObservedQuantity::Pressure: return {"p"};
+    case ObservedQuantity::Force: return {"fx", "fy"};
+  }
+  return {};
+}
+
+std::vector<Real> PointObserver::sample(const Simulation& sim) const {
+  if (target_ == Target::Boundaries) {
+    Vec2 total = Vec2::Zero();
+    for (std::size_t k : contact_indices_) total += total_force_on_boundary(sim.fluid_contacts()[k]);
+    return {total.x(), total.y()};
+  }
+  if (target_ == Target::Solid) {
+    const SolidParticles& p = sim.solids()[solid_index_].particles;
+    Vec2 value = Vec2::Zero();
+    for (std::size_t k = 0; k < particles_.size(); ++k) {
+      const Index a = particles_[k];
+      const Vec2 q = spec_.quantity == ObservedQuantity::Position       ? p.pos[a]
+                     : spec_.quantity == ObservedQuantity::Displacement ? Vec2(p.pos[a] - p.pos0[a])
+                                                                        : p.vel[a];
+      value += weights_[k] * q;
+    }
+    return {value.x(), value.y()};
+  }
+  const FluidBody& fluid = sim.fluid();
+  const FluidParticles& f = fluid.particles;
+  Real weight = 0.0, pressure = 0.0;
+  Vec2 velocity = Vec2::Zero();
+  for (std::size_t i = 0; i < f.size(); ++i) {
+    const Real w = fluid.kernel.W(sim.box().difference(f.pos[i], spec_.point).norm()) * f.vol[i];
+    if (w <= 0.0) continue;
+    weight += w;
+    velocity += w * f.vel[i];
+    pressure += w * f.p[i];
+  }
+  if (weight > 0.0) { velocity /= weight; pressure /= weight; }
+  if (spec_.quantity == ObservedQuantity::Pressure) return {pressure};
+  return {velocity.x(), velocity.y()};
+}
+
+}  // namespace mrsph

@@ -1,0 +1,48 @@
+// Observers: what a run records over time.
+//   solid body, "position" / "displacement": a kernel-weighted average over a fixed set of material
+//     particles chosen at t = 0 around the point (weights W V, normalised; METHOD.md section 8),
+//     or the single nearest particle. Displacement = position - reference position, so a probe
+//     that sits inside the tip does not bias the mean.
+//   fluid body, "velocity" / "pressure": a Shepard average of the fluid particles within the
+//     fluid's kernel support of the point, at the sampling time.
+//   boundary bodies, "force": the total force of the fluid on the listed wall and solid bodies.
+#pragma once
+
+#include "simulation/simulation.hpp"
+
+#include <string>
+#include <vector>
+
+namespace mrsph {
+
+enum class ObservedQuantity { Position, Displacement, Velocity, Pressure, Force };
+
+struct ObserverSpec {
+  std::string name;
+  std::vector<std::string> bodies;  // one body, or several for "force"
+  Vec2 point = Vec2::Zero();
+  ObservedQuantity quantity = ObservedQuantity::Position;
+  bool nearest_particle = false;
+};
+
+class PointObserver {
+ public:
+  // Throws std::invalid_argument if a body is unknown or the quantity does not fit the body.
+  PointObserver(ObserverSpec spec, const Simulation& sim);
+
+  const std::string& name() const { return spec_.name; }
+  const ObserverSpec& spec() const { return spec_; }
+  std::vector<std::string> columns() const;
+  std::vector<Real> sample(const Simulation& sim) const;
+
+ private:
+  enum class Target { Fluid, Solid, Boundaries };
+  ObserverSpec spec_;
+  Target target_ = Target::Fluid;
+  std::size_t solid_index_ = 0;
+  std::vector<std::size_t> contact_indices_;
+  std::vector<Index> particles_;  // solid: fixed material particles
+  std::vector<Real> weights_;
+};
+
+}  // namespace mrsph

@@ -1,0 +1,75 @@
+#include "scene/region_reader.hpp"
+
+namespace mrsph {
+
+namespace {
+
+ShapePtr read_region_node(const SceneNode& node);
+
+std::vector<ShapePtr> read_region_list(const SceneNode& parent, const std::string& key) {
+  std::vector<ShapePtr> out;
+  for (const SceneNode& item : parent.children(key)) out.push_back(read_region_node(item));
+  if (out.empty()) parent.fail(key, "expected a non-empty array of regions");
+  return out;
+}
+
+ShapePtr read_region_node(const SceneNode& node) {
+  const std::vector<std::string> keys = node.keys();
+  if (keys.size() != 1)
+    node.fail("", "a region is an object with exactly one of the keys \"rectangle\", \"circle\", \"polygon\", "
+                  "\"union\", \"intersection\", \"difference\"");
+  const std::string& kind = keys.front();
+  ShapePtr shape;
+  try {
+    if (kind == "rectangle") {
+      const SceneNode r = node.child(kind);
+      shape = std::make_shared<Rectangle>(r.vec2("lower"), r.vec2("upper"));
+      r.finish();
+    } else if (kind == "circle") {
+      const SceneNode c = node.child(kind);
+      shape = std::make_shared<Circle>(c.vec2("center"), c.positive("radius"));
+      c.finish();
+    } else if (kind == "polygon") {
+      const SceneNode p = node.child(kind);
+      shape = std::make_shared<Polygon>(p.vec2_list("vertices"));
+      p.finish();
+    } else if (kind == "union") {
+      shape = std::make_shared<Union>(read_region_list(node, kind));
+    } else if (kind == "intersection") {
+      shape = std::make_shared<Intersection>(read_region_list(node, kind));
+    } else if (kind == "difference") {
+      const SceneNode d = node.child(kind);
+      shape = std::make_shared<Difference>(read_region(d, "base"), read_region_list(d, "subtract"));
+      d.finish();
+    } else {
+      node.fail(kind, "unknown region type; expected \"rectangle\", \"circle\", \"polygon\", \"union\", "
+                      "\"intersection\" or \"difference\"");
+    }
+  } catch (const std::invalid_argument& e) {
+    node.fail(kind, e.what());
+  }
+  node.finish();
+  return shape;
+}
+
+}  // namespace
+
+ShapePtr read_region(const SceneNode& parent, const std::string& key) { return read_region_node(parent.child(key)); }
+
+FillSpec read_fill(const SceneNode& parent, const std::string& key) {
+  FillSpec fill;
+  const auto node = parent.optional_child(key);
+  if (!node) return fill;
+  const std::string pattern = node->choice_or("pattern", {"lattice", "rings"}, "lattice");
+  fill.pattern = pattern == "rings" ? FillPattern::Rings : FillPattern::Lattice;
+  if (node->has("origin")) fill.lattice_origin = node->vec2("origin");
+  if (fill.pattern == FillPattern::Rings) {
+    fill.ring_center = node->vec2("center");
+    fill.ring_radius = node->positive("radius");
+  }
+  fill.clearance = node->non_negative_or("clearance", fill.clearance);
+  node->finish();
+  return fill;
+}
+
+}  // namespace mrsph

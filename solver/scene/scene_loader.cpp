@@ -1,0 +1,381 @@
+#include "scene/scene_loader.hpp"
+
+#include "boundary/initial_velocity.hpp"
+#include "scene/region_reader.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+namespace mrsph {
+
+namespace {
+
+ParameterTable read_parameters(const Json& document, const std::string& file) {
+  ParameterTable table;
+  if (!document.contains("parameters")) return table;
+  const Json& params = document.at("parameters");
+  if (!params.is_object()) throw InputError(file, "parameters", "expected an object of name: value, got " + describe_json(params));
+  // In order of appearance: a parameter may use the ones defined before it.
+  for (auto it = params.begin(); it != params.end(); ++it) {
+    const std::string key = "parameters." + it.key();
+    double value = 0.0;
+    if (it.value().is_number()) {
+      value = it.value().get<double>();
+    } else if (it.value().is_string()) {
+      try {
+        value = evaluate_expression(it.value().get<std::string>(), table);
+      } catch (const ExpressionError& e) {
+        throw InputError(file, key, e.what());
+      }
+    } else {
+      throw InputError(file, key, "expected a number or an expression string, got " + describe_json(it.value()));
+    }
+    if (!std::isfinite(value)) throw InputError(file, key, "evaluates to a non-finite number");
+    table[it.key()] = value;
+  }
+  return table;
+}
+
+DomainBox read_domain(const SceneNode& node) {
+  DomainBox box;
+  box.lower = node.vec2("lower");
+  box.upper = node.vec2("upper");
+  box.periodic = node.flag_pair_or("periodic", {false, false});
+  if (!(box.upper.x() > box.lower.x() && box.upper.y() > box.lower.y()))
+    node.fail("upper", "the upper corner must lie above and to the right of the lower corner");
+  node.finish();
+  return box;
+}
+
+InitialVelocity read_initial_velocity(const SceneNode& parent) {
+  const auto node = parent.optional_child("initial_velocity");
+  if (!node) return UniformVelocity{};
+  const std::string type = node->choice("type", {"uniform", "womersley", "cantilever_mode"});
+  InitialVelocity field;
+  if (type == "uniform") {
+    field = UniformVelocity{node->vec2("value")};
+  } else if (type == "womersley") {
+    WomersleyVelocity w;
+    w.profile.channel_bottom = node->number_or("bottom", 0.0);
+    w.profile.channel_height = node->positive("height");
+    w.profile.pressure_gradient_amplitude = node->number("pressure_gradient_amplitude");
+    w.profile.angular_frequency = node->positive("angular_frequency");
+    w.profile.density = node->positive("density");
+    w.profile.kinematic_viscosity = node->positive("kinematic_viscosity");
+    w.time = node->number_or("time", 0.0);
+    field = w;
+  } else {
+    CantileverModeVelocity c;
+    c.clamp_x = node->number("clamp_x");
+    c.length = node->positive("length");
+    c.amplitude = node->number("amplitude");
+    c.kL = node->positive_or("kL", 1.875);
+    field = c;
+  }
+  node->finish();
+  return field;
+}
+
+// Particle generation with the checks every body needs.
+GeneratedParticles generate_body(const SceneNode& node, const std::string& body, const Shape& region, Real dp,
+                                 const FillSpec& fill, const DomainBox& box, double& budget) {
+  const double capacity = fill.pattern == FillPattern::Lattice ? lattice_capacity(region, dp)
+                                                                : kPi * fill.ring_radius * fill.ring_radius / (dp * dp) * 1.2 + 10;
+  if (capacity > budget)
+    node.fail("dp", fmt::format("body '{}' would need up to {:.3g} particles at dp = {:g}, more than the {:.3g} still "
+                                "allowed (the limit guards memory; raise it with --max-particles)",
+                                body, capacity, dp, budget));
+  GeneratedParticles generated = generate_particles(region, dp, fill);
+  budget -= static_cast<double>(generated.pos.size());
+  if (generated.pos.empty())
+    node.fail("region", fmt::format("body '{}' has no particles: its region is empty or thinner than dp = {:g}", body, dp));
+  for (const Vec2& p : generated.pos) {
+    bool inside = box.contains(p);
+    for (int a = 0; a < 2; ++a)
+      if (box.periodic[a] && (p[a] < box.lower[a] || p[a] >= box.upper[a])) inside = false;
+    if (!inside)
+      node.fail("region", fmt::format("body '{}' has a particle at ({:g}, {:g}), outside the domain [{:g}, {:g}] x [{:g}, {:g}]",
+                                      body, p.x(), p.y(), box.lower.x(), box.upper.x(), box.lower.y(), box.upper.y()));
+  }
+  return generated;
+}
+
+Real read_h_over_dp(const SceneNode& node, Real fallback) {
+  if (!node.has("h_over_dp")) return fallback;
+  const Real r = node.number("h_over_dp");
+  if (!(r >= 0.8 && r <= 3.0)) node.fail("h_over_dp", fmt::format("expected a ratio h/dp in [0.8, 3], got {:g}", r));
+  return r;
+}
+
+struct PlacedBody {
+  std::string name;
+  ShapePtr region;
+  Real dp;
+  const Vec2Array* pos;
+};
+
+FluidBody read_fluid(const SceneNode& node, const DomainBox& box, double& budget, ShapePtr& region) {
+  const std::string name = node.has("name") ? node.text("name") : "fluid";
+  const Real dp = node.positive("dp");
+  FluidBody fluid(name, dp, read_h_over_dp(node, 1.3));
+  region = read_region(node, "region");
+  const FillSpec fill = read_fill(node, "fill");
+
+  FluidMaterial& m = fluid.material;
+  m.eos.rho0 = node.positive("density");
+  m.eos.c0 = node.positive("sound_speed");
+  m.eos.kind = node.choice_or("equation_of_state", {"linear", "tait"}, "linear") == "tait" ? EquationOfStateKind::Tait
+                                                                                         : EquationOfStateKind::Linear;
+  m.viscosity = node.non_negative_or("viscosity", 0.0);
+
+  if (const auto r = node.optional_child("riemann")) {
+    fluid.riemann.continuity = r->flag_or("continuity", true);
+    fluid.riemann.momentum = r->flag_or("momentum", false);
+    fluid.riemann.damp_separating = r->choice_or("limiter", {"approaching", "separating"}, "approaching") == "separating";
+    fluid.riemann.limiter_eta = r->positive_or("eta", 3.0);
+    r->finish();
+  }
+  fluid.riemann.impedance = m.eos.impedance();
+  fluid.riemann.sound_speed = m.eos.c0;
+
+  FluidOptions& o = fluid.options;
+  o.density = node.choice_or("density_reinitialisation", {"internal", "free_surface"}, "internal") == "free_surface"
+                  ? DensityReinitialisation::FreeSurface
+                  : DensityReinitialisation::Internal;
+  o.transport_velocity_alpha = node.non_negative_or("transport_velocity_alpha", 0.0);
+  o.reference_velocity = node.positive_or("reference_velocity", 1.0);
+  o.advection_cfl = node.positive_or("advection_cfl", o.advection_cfl);
+  o.acoustic_cfl = node.positive_or("acoustic_cfl", o.acoustic_cfl);
+  const InitialVelocity velocity = read_initial_velocity(node);
+  node.finish();
+
+  const GeneratedParticles g = generate_body(node, name, *region, dp, fill, box, budget);
+  FluidParticles& f = fluid.particles;
+  f.resize(g.pos.size());
+  for (std::size_t i = 0; i < g.pos.size(); ++i) {
+    f.pos[i] = g.pos[i];
+    f.vol[i] = g.vol[i];
+    f.rho[i] = m.rho0();
+    f.mass[i] = m.rho0() * g.vol[i];
+    f.vel[i] = initial_velocity_at(velocity, g.pos[i]);
+  }
+  return fluid;
+}
+
+WallBody read_wall(const SceneNode& node, const DomainBox& box, double& budget, ShapePtr& region) {
+  const std::string name = node.text("name");
+  const Real dp = node.positive("dp");
+  WallBody wall(name, dp, read_h_over_dp(node, 1.3));
+  region = read_region(node, "region");
+  const FillSpec fill = read_fill(node, "fill");
+  node.finish();
+  const GeneratedParticles g = generate_body(node, name, *region, dp, fill, box, budget);
+  wall.particles.resize(g.pos.size());
+  wall.particles.pos = g.pos;
+  wall.particles.vol = g.vol;
+  return wall;
+}
+
+SolidBody read_solid(const SceneNode& node, const DomainBox& box, double& budget, ShapePtr& region) {
+  const std::string name = node.text("name");
+  const Real dp = node.positive("dp");
+  const Real h_over_dp = read_h_over_dp(node, 1.3);
+  region = read_region(node, "region");
+  const FillSpec fill = read_fill(node, "fill");
+  const SceneNode mat = node.child("material");
+  const std::string model_name = mat.choice("model", {"saint_venant_kirchhoff", "linear_elastic", "neo_hookean"});
+  const Real rho = mat.positive("density");
+  const Real E = mat.positive("youngs_modulus");
+  const Real nu = mat.in_range("poisson_ratio", -1.0, 0.5);
+  mat.finish();
+  SolidBody solid(name, dp, h_over_dp, ElasticMaterial(solid_model_from_name(model_name), rho, E, nu));
+  solid.options.cfl = node.positive_or("cfl", solid.options.cfl);
+  ShapePtr clamp;
+  if (node.has("clamp")) clamp = read_region(node, "clamp");
+  const InitialVelocity velocity = read_initial_velocity(node);
+  node.finish();
+
+  const GeneratedParticles g = generate_body(node, name, *region, dp, fill, box, budget);
+  SolidParticles& s = solid.particles;
+  s.resize(g.pos.size());
+  for (std::size_t a = 0; a < g.pos.size(); ++a) {
+    s.pos0[a] = s.pos[a] = s.pos_acoustic_start[a] = g.pos[a];
+    s.vol0[a] = g.vol[a];
+    s.mass[a] = rho * g.vol[a];
+    s.rho[a] = rho;
+    s.constrained[a] = clamp && clamp->contains(g.pos[a]) ? 1 : 0;
+    if (!s.constrained[a]) s.vel[a] = initial_velocity_at(velocity, g.pos[a]);
+  }
+  return solid;
+}
+
+void check_overlaps(const std::vector<PlacedBody>& bodies, const std::string& file) {
+  for (const PlacedBody& a : bodies)
+    for (const PlacedBody& b : bodies) {
+      if (&a == &b) continue;
+      for (const Vec2& p : *a.pos)
+        if (b.region->signed_distance(p) < -0.25 * b.dp)
+          throw InputError(file, "", fmt::format("bodies '{}' and '{}' overlap: a particle of '{}' at ({:g}, {:g}) lies "
+                                                 "inside the region of '{}' (cut one region out of the other)",
+                                                 a.name, b.name, a.name, p.x(), p.y(), b.name));
+    }
+}
+
+ObservedQuantity read_quantity(const SceneNode& node) {
+  const std::string q = node.choice("quantity", {"position", "displacement", "velocity", "pressure", "force"});
+  if (q == "position") return ObservedQuantity::Position;
+  if (q == "displacement") return ObservedQuantity::Displacement;
+  if (q == "velocity") return ObservedQuantity::Velocity;
+  if (q == "pressure") return ObservedQuantity::Pressure;
+  return ObservedQuantity::Force;
+}
+
+}  // namespace
+
+LoadedScene build_scene(const Json& document, const std::string& file, const SceneLimits& limits) {
+  auto context = std::make_shared<SceneContext>();
+  context->file = file;
+  context->parameters = read_parameters(document, file);
+  const SceneNode root(document, context, "");
+  root.has("parameters");  // read above
+
+  LoadedScene scene;
+  scene.file = file;
+  scene.document = document;
+  scene.parameters = context->parameters;
+  scene.name = root.has("name") ? root.text("name") : std::filesystem::path(file).stem().string();
+  scene.description = root.has("description") ? root.text("description") : "";
+  scene.units = root.has("units") ? root.text("units") : "";
+
+  const DomainBox box = read_domain(root.child("domain"));
+  auto sim = std::make_unique<Simulation>(box);
+  double budget = limits.max_particles;
+  std::vector<PlacedBody> placed;
+  std::vector<ShapePtr> regions;
+
+  if (const auto node = root.optional_child("fluid")) {
+    ShapePtr region;
+    sim->set_fluid(read_fluid(*node, box, budget, region));
+    regions.push_back(region);
+  }
+  const std::vector<SceneNode> wall_nodes = root.children("walls");
+  for (const SceneNode& node : wall_nodes) {
+    ShapePtr region;
+    sim->add_wall(read_wall(node, box, budget, region));
+    regions.push_back(region);
+  }
+  const std::vector<SceneNode> solid_nodes = root.children("solids");
+  for (const SceneNode& node : solid_nodes) {
+    ShapePtr region;
+    SolidBody& solid = sim->add_solid(read_solid(node, box, budget, region));
+    regions.push_back(region);
+    if (sim->has_fluid() && sim->fluid().h() < solid.h() * (1.0 - 1e-12))
+      node.fail("dp", fmt::format("the method needs h_F >= h_S (paper section 3.1): fluid h = {:g} but solid '{}' has "
+                                  "h = {:g}; refine the solid or coarsen the fluid",
+                                  sim->fluid().h(), solid.name, solid.h()));
+  }
+  if (!sim->has_fluid() && sim->solids().empty())
+    root.fail("", "the scene has neither a fluid nor a solid body: nothing to simulate");
+
+  {  // Names must be unique: observers and reports refer to bodies by name.
+    std::vector<std::string> names;
+    if (sim->has_fluid()) names.push_back(sim->fluid().name);
+    for (const auto& w : sim->walls()) names.push_back(w.name);
+    for (const auto& s : sim->solids()) names.push_back(s.name);
+    for (std::size_t i = 0; i < names.size(); ++i)
+      for (std::size_t j = i + 1; j < names.size(); ++j)
+        if (names[i] == names[j]) root.fail("", "two bodies are named '" + names[i] + "'; body names must be unique");
+  }
+  std::size_t r = 0;
+  if (sim->has_fluid()) placed.push_back({sim->fluid().name, regions[r++], sim->fluid().dp, &sim->fluid().particles.pos});
+  for (const auto& w : sim->walls()) placed.push_back({w.name, regions[r++], w.dp, &w.particles.pos});
+  for (const auto& s : sim->solids()) placed.push_back({s.name, regions[r++], s.dp, &s.particles.pos0});
+  check_overlaps(placed, file);
+
+  if (const auto node = root.optional_child("body_force")) {
+    sim->body_force.constant = node->vec2_or("constant", Vec2::Zero());
+    sim->body_force.amplitude = node->vec2_or("amplitude", Vec2::Zero());
+    sim->body_force.angular_frequency = node->non_negative_or("angular_frequency", 0.0);
+    sim->body_force.phase = node->number_or("phase", 0.0);
+    sim->body_force_on_solids = node->flag_or("on_solids", true);
+    node->finish();
+  }
+  if (const auto node = root.optional_child("inflow")) {
+    if (!sim->has_fluid()) node->fail("", "an inflow needs a fluid body");
+    InflowBuffer inflow;
+    inflow.region = read_region(*node, "buffer");
+    const SceneNode profile = node->child("profile");
+    profile.choice("type", {"parabolic_channel"});
+    inflow.profile.channel_bottom = profile.number_or("bottom", 0.0);
+    inflow.profile.channel_height = profile.positive("height");
+    inflow.profile.mean_velocity = profile.number("mean_velocity");
+    inflow.profile.ramp_time = profile.non_negative_or("ramp_time", 0.0);
+    profile.finish();
+    node->finish();
+    sim->inflow = std::move(inflow);
+  }
+
+  std::string schedule_name = "multi_step_position_verlet";
+  if (const auto node = root.optional_child("schedule")) {
+    schedule_name = node->choice_or("type", {"multi_step_position_verlet", "single_step_position_verlet"}, schedule_name);
+    sim->solid_kinematics = node->choice_or("solid_kinematics", {"averaged", "instantaneous"}, "averaged") == "instantaneous"
+                                ? SolidKinematics::Instantaneous
+                                : SolidKinematics::Averaged;
+    node->finish();
+  }
+  scene.schedule = make_schedule(schedule_name);
+
+  if (const auto node = root.optional_child("limits")) {
+    sim->limits.speed_factor = node->positive_or("speed_factor", sim->limits.speed_factor);
+    node->finish();
+  }
+
+  scene.run.end_time = root.positive("end_time");
+  if (const auto node = root.optional_child("output")) {
+    scene.run.observer_interval = node->non_negative_or("observer_interval", 0.0);
+    scene.run.snapshot_interval = node->non_negative_or("snapshot_interval", 0.0);
+    node->finish();
+  }
+
+  for (const SceneNode& node : root.children("observers")) {
+    ObserverSpec spec;
+    spec.name = node.text("name");
+    spec.quantity = read_quantity(node);
+    if (node.has("bodies")) {
+      const Json& list = node.raw().at("bodies");
+      if (!list.is_array() || list.empty()) node.fail("bodies", "expected a non-empty array of body names");
+      for (const Json& b : list) {
+        if (!b.is_string()) node.fail("bodies", "expected body names (strings), got " + describe_json(b));
+        spec.bodies.push_back(b.get<std::string>());
+      }
+    } else {
+      spec.bodies.push_back(node.text("body"));
+    }
+    if (spec.quantity != ObservedQuantity::Force) spec.point = node.vec2("point");
+    spec.nearest_particle = node.flag_or("nearest_particle", false);
+    node.finish();
+    scene.observers.push_back(std::move(spec));
+  }
+  root.finish();
+
+  sim->initialise();
+  for (const ObserverSpec& spec : scene.observers) {
+    try {
+      PointObserver probe(spec, *sim);
+    } catch (const std::invalid_argument& e) {
+      throw InputError(file, "observers", e.what());
+    }
+  }
+  scene.simulation = std::move(sim);
+  return scene;
+}
+
+LoadedScene load_scene(const std::filesystem::path& path, const std::vector<std::string>& overrides,
+                       const SceneLimits& limits) {
+  Json document = read_scene_document(path);
+  for (const std::string& o : overrides) apply_override(document, o, path.string());
+  return build_scene(document, path.string(), limits);
+}
+
+}  // namespace mrsph

@@ -1,0 +1,43 @@
+#include "simulation/run_summary.hpp"
+
+#include <thread>
+
+namespace mrsph {
+
+nlohmann::ordered_json particle_counts(const Simulation& sim) {
+  nlohmann::ordered_json j = nlohmann::ordered_json::object();
+  if (sim.has_fluid()) j[sim.fluid().name] = sim.fluid().particles.size();
+  for (const auto& w : sim.walls()) j[w.name] = w.particles.size();
+  for (const auto& s : sim.solids()) j[s.name] = s.particles.size();
+  return j;
+}
+
+nlohmann::ordered_json step_counts(const StepCounters& steps) {
+  return {{"advection", steps.advection}, {"acoustic", steps.acoustic}, {"solid", steps.solid}};
+}
+
+nlohmann::ordered_json divergence_json(const DivergenceInfo& info) {
+  return {{"time", info.time}, {"step", info.step}, {"body", info.body}, {"particle", info.particle}, {"reason", info.reason}};
+}
+
+nlohmann::ordered_json run_summary_json(const LoadedScene& scene, const RunResult& result, int threads) {
+  nlohmann::ordered_json j;
+  j["scene"] = scene.name;
+  j["file"] = scene.file;
+  j["completed"] = result.completed;
+  j["diverged"] = result.divergence.has_value();
+  if (result.divergence) j["divergence"] = divergence_json(*result.divergence);
+  j["end_time"] = scene.run.end_time;
+  j["time_reached"] = result.end_time_reached;
+  j["schedule"] = scene.schedule->name();
+  j["machine"] = {{"threads", threads}, {"hardware_concurrency", std::thread::hardware_concurrency()}};
+  j["cost"] = {{"wall_s", result.wall_s}, {"cpu_s", result.cpu_s},
+               {"particles", particle_counts(*scene.simulation)}, {"steps", step_counts(result.steps)}};
+  nlohmann::ordered_json files = nlohmann::ordered_json::array();
+  for (const auto& s : result.series) files.push_back("observers/" + s.name + ".csv");
+  j["observers"] = files;
+  j["config"] = scene.document;
+  return j;
+}
+
+}  // namespace mrsph

@@ -1,0 +1,17 @@
+// The JSON summary of one `mrsph run`: what ran (the scene after overrides), on what, how far it
+// got, what it cost, and where its outputs are.
+#pragma once
+
+#include "scene/scene_loader.hpp"
+#include "simulation/runner.hpp"
+
+#include <nlohmann/json.hpp>
+
+namespace mrsph {
+
+nlohmann::ordered_json particle_counts(const Simulation& sim);
+nlohmann::ordered_json step_counts(const StepCounters& steps);
+nlohmann::ordered_json divergence_json(const DivergenceInfo& info);
+nlohmann::ordered_json run_summary_json(const LoadedScene& scene, const RunResult& result, int threads);
+
+}  // namespace mrsph

@@ -1,0 +1,174 @@
+#include "simulation/simulation.hpp"
+
+#include "core/parallel.hpp"
+#include "fluid/density_summation.hpp"
+#include "geometry/particle_normals.hpp"
+#include "solid/solid_dynamics.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <sstream>
+#include <stdexcept>
+
+namespace mrsph {
+
+void Simulation::set_fluid(FluidBody fluid) {
+  if (initialised_) throw std::logic_error("Simulation: bodies must be added before initialise()");
+  fluid_.emplace(std::move(fluid));
+}
+
+WallBody& Simulation::add_wall(WallBody wall) {
+  if (initialised_) throw std::logic_error("Simulation: bodies must be added before initialise()");
+  walls_.push_back(std::move(wall));
+  return walls_.back();
+}
+
+SolidBody& Simulation::add_solid(SolidBody solid) {
+  if (initialised_) throw std::logic_error("Simulation: bodies must be added before initialise()");
+  solids_.push_back(std::move(solid));
+  return solids_.back();
+}
+
+void Simulation::initialise() {
+  if (initialised_) throw std::logic_error("Simulation: initialise() called twice");
+  initialised_ = true;
+
+  for (WallBody& wall : walls_) {
+    CellGrid grid(box_, wall.kernel.cutoff());
+    grid.build(wall.particles.pos);
+    NeighborList inner;
+    inner.build(wall.particles.pos, grid, wall.kernel, /*exclude_self=*/true);
+    wall.particles.normal = normals_from_kernel_gradient(wall.particles.vol, inner);
+  }
+  for (SolidBody& solid : solids_) initialise_solid(solid);
+
+  if (!fluid_) return;
+  for (const WallBody& wall : walls_) {
+    FluidContact c;
+    c.boundary_name = wall.name;
+    c.boundary = wall.boundary_view();
+    contacts_.push_back(std::move(c));
+  }
+  for (const SolidBody& solid : solids_) {
+    FluidContact c;
+    c.boundary_name = solid.name;
+    c.boundary = solid.boundary_view();
+    contacts_.push_back(std::move(c));
+  }
+  rebuild_fluid_relations();
+  reinitialise_density(*fluid_, fluid_inner_, contacts_);
+  FluidParticles& f = fluid_->particles;
+  for (std::size_t i = 0; i < f.size(); ++i) f.p[i] = fluid_->material.eos.pressure(f.rho[i]);
+}
+
+namespace {
+
+// Orders fluid particles by cell (row-major over cells of size `cell`) so that neighbours sit
+// close in memory. Particle identity is not tracked anywhere, so the fluid may be reordered.
+std::vector<Index> cell_order(const Vec2Array& pos, const DomainBox& box, Real cell) {
+  const std::size_t n = pos.size();
+  std::vector<std::int64_t> key(n);
+  Vec2 lo = pos.empty() ? Vec2::Zero() : pos[0];
+  for (const Vec2& p : pos) lo = lo.cwiseMin(box.wrap(p));
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec2 q = (box.wrap(pos[i]) - lo) / cell;
+    key[i] = static_cast<std::int64_t>(q.y()) * 1000000 + static_cast<std::int64_t>(q.x());
+  }
+  std::vector<Index> order(n);
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](Index a, Index b) { return key[a] < key[b]; });
+  return order;
+}
+
+constexpr std::size_t kSortInterval = 100;  // advection steps between reorderings
+
+}  // namespace
+
+void Simulation::rebuild_fluid_relations() {
+  if (!fluid_) return;
+  FluidBody& fluid = *fluid_;
+  FluidParticles& f = fluid.particles;
+  parallel_for_each(f.size(), [&](std::size_t i) { f.pos[i] = box_.wrap(f.pos[i]); });
+  if (rebuilds_since_sort_++ % kSortInterval == 0) f.permute(cell_order(f.pos, box_, fluid.kernel.cutoff()));
+
+  // Cell lists of every body first, from current positions; then all pair lists.
+  CellGrid fluid_grid(box_, fluid.kernel.cutoff());
+  fluid_grid.build(f.pos);
+  std::vector<CellGrid> boundary_grids;
+  std::vector<WendlandC2> contact_kernels;
+  auto add_boundary = [&](const Vec2Array& pos, Real h_boundary) {
+    const WendlandC2 kernel(std::max(fluid.h(), h_boundary));  // the larger h across bodies
+    boundary_grids.emplace_back(box_, kernel.cutoff());
+    boundary_grids.back().build(pos);
+    contact_kernels.push_back(kernel);
+  };
+  for (const WallBody& wall : walls_) add_boundary(wall.particles.pos, wall.h());
+  for (const SolidBody& solid : solids_) add_boundary(solid.particles.pos, solid.h());
+
+  fluid_inner_.build(f.pos, fluid_grid, fluid.kernel, /*exclude_self=*/true);
+  for (std::size_t c = 0; c < contacts_.size(); ++c) {
+    FluidContact& contact = contacts_[c];
+    contact.pairs.build(f.pos, boundary_grids[c], contact_kernels[c], /*exclude_self=*/false);
+    const std::size_t boundary_count = boundary_grids[c].size();
+    contact.pairs_of_boundary.build(contact.pairs, boundary_count);
+    if (contact.boundary_dissipation_reaction.size() != boundary_count)
+      contact.boundary_dissipation_reaction.assign(boundary_count, Vec2::Zero());
+  }
+}
+
+namespace {
+
+[[noreturn]] void diverged(const Simulation& sim, const std::string& body, std::size_t particle, const std::string& why) {
+  throw DivergenceError(DivergenceInfo{sim.time, sim.steps.advection, body, static_cast<long long>(particle), why});
+}
+
+std::string vec_text(const Vec2& v) {
+  std::ostringstream s;
+  s << "(" << v.x() << ", " << v.y() << ")";
+  return s.str();
+}
+
+}  // namespace
+
+void Simulation::check_divergence() const {
+  if (fluid_) {
+    const FluidParticles& f = fluid_->particles;
+    const Real limit = limits.speed_factor * fluid_->material.sound_speed();
+    for (std::size_t i = 0; i < f.size(); ++i) {
+      if (!f.pos[i].allFinite() || !f.vel[i].allFinite() || !std::isfinite(f.rho[i]))
+        diverged(*this, fluid_->name, i, "non-finite position, velocity or density");
+      const Real speed = f.vel[i].norm();
+      if (speed > limit)
+        diverged(*this, fluid_->name, i, "runaway speed |v| = " + std::to_string(speed) + " > " +
+                                             std::to_string(limit) + " (" + std::to_string(limits.speed_factor) + " c_F)");
+      if (!box_.contains(f.pos[i]))
+        diverged(*this, fluid_->name, i, "particle left the domain at " + vec_text(f.pos[i]));
+      if (!(f.rho[i] > 0.0)) diverged(*this, fluid_->name, i, "non-positive density " + std::to_string(f.rho[i]));
+    }
+  }
+  for (const SolidBody& solid : solids_) {
+    const SolidParticles& s = solid.particles;
+    const Real limit = limits.speed_factor * solid.material.sound_speed();
+    for (std::size_t a = 0; a < s.size(); ++a) {
+      if (!s.pos[a].allFinite() || !s.vel[a].allFinite() || !s.F[a].allFinite())
+        diverged(*this, solid.name, a, "non-finite position, velocity or deformation gradient");
+      const Real J = s.F[a].determinant();
+      if (!(J > 0.0)) diverged(*this, solid.name, a, "inverted element, J = det F = " + std::to_string(J));
+      const Real speed = s.vel[a].norm();
+      if (speed > limit)
+        diverged(*this, solid.name, a, "runaway speed |v| = " + std::to_string(speed) + " > " +
+                                           std::to_string(limit) + " (" + std::to_string(limits.speed_factor) + " c_S)");
+      if (!box_.contains(s.pos[a])) diverged(*this, solid.name, a, "particle left the domain at " + vec_text(s.pos[a]));
+    }
+  }
+}
+
+std::size_t Simulation::particle_count() const {
+  std::size_t n = fluid_ ? fluid_->particles.size() : 0;
+  for (const WallBody& w : walls_) n += w.particles.size();
+  for (const SolidBody& s : solids_) n += s.particles.size();
+  return n;
+}
+
+}  // namespace mrsph

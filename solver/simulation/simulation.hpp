@@ -1,0 +1,94 @@
+// The state of one simulation: bodies, their relations, the clock and the step counters. No
+// global state: two Simulations can run side by side in one process (the harness does).
+// Schedules (time/) advance it; observers (observers/) read it.
+#pragma once
+
+#include "boundary/body_force.hpp"
+#include "boundary/inflow.hpp"
+#include "boundary/wall_body.hpp"
+#include "core/errors.hpp"
+#include "fluid/fluid_body.hpp"
+#include "neighbor/domain_box.hpp"
+#include "solid/solid_body.hpp"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace mrsph {
+
+struct StepCounters {
+  long long advection = 0;
+  long long acoustic = 0;
+  long long solid = 0;  // solid sub-steps, summed over solid bodies
+};
+
+// How the fluid sees an elastic solid within an acoustic step (paper Eq. 35 and section 3.2).
+enum class SolidKinematics { Averaged, Instantaneous };
+
+struct DivergenceLimits {
+  Real speed_factor = 3.0;  // |v| above this multiple of the body's sound speed is a runaway
+};
+
+class Simulation {
+ public:
+  explicit Simulation(DomainBox box) : box_(box) {}
+  Simulation(const Simulation&) = delete;
+  Simulation& operator=(const Simulation&) = delete;
+
+  // Set-up: add bodies, then call initialise() once. Bodies cannot be added afterwards (the
+  // relations keep pointers into them).
+  void set_fluid(FluidBody fluid);
+  WallBody& add_wall(WallBody wall);
+  SolidBody& add_solid(SolidBody solid);
+  void initialise();
+
+  const DomainBox& box() const { return box_; }
+  bool has_fluid() const { return fluid_.has_value(); }
+  FluidBody& fluid() { return *fluid_; }
+  const FluidBody& fluid() const { return *fluid_; }
+  std::vector<WallBody>& walls() { return walls_; }
+  const std::vector<WallBody>& walls() const { return walls_; }
+  std::vector<SolidBody>& solids() { return solids_; }
+  const std::vector<SolidBody>& solids() const { return solids_; }
+
+  const NeighborList& fluid_inner() const { return fluid_inner_; }
+  std::vector<FluidContact>& fluid_contacts() { return contacts_; }
+  const std::vector<FluidContact>& fluid_contacts() const { return contacts_; }
+  // The contact of the fluid with wall w / solid s.
+  FluidContact& wall_contact(std::size_t w) { return contacts_[w]; }
+  FluidContact& solid_contact(std::size_t s) { return contacts_[walls_.size() + s]; }
+  const FluidContact& wall_contact(std::size_t w) const { return contacts_[w]; }
+  const FluidContact& solid_contact(std::size_t s) const { return contacts_[walls_.size() + s]; }
+
+  BodyForce body_force;
+  bool body_force_on_solids = true;
+  std::optional<InflowBuffer> inflow;
+  SolidKinematics solid_kinematics = SolidKinematics::Averaged;
+  DivergenceLimits limits;
+
+  Real time = 0.0;
+  StepCounters steps;
+
+  // Wraps fluid positions into the periodic box, rebuilds the fluid's cell lists and every fluid
+  // pair list (cell lists of all bodies first, then the pairs, so both sides see the same
+  // positions; METHOD.md section 6 step 8).
+  void rebuild_fluid_relations();
+  // Throws DivergenceError on NaN/Inf, runaway speed, a particle out of the domain or J <= 0.
+  void check_divergence() const;
+
+  std::size_t particle_count() const;
+
+ private:
+  DomainBox box_;
+  std::optional<FluidBody> fluid_;
+  std::vector<WallBody> walls_;
+  std::vector<SolidBody> solids_;
+  bool initialised_ = false;
+
+  NeighborList fluid_inner_;
+  std::vector<FluidContact> contacts_;
+  std::size_t rebuilds_since_sort_ = 0;
+};
+
+}  // namespace mrsph

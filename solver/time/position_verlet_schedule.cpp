@@ -1,0 +1,88 @@
+#include "time/position_verlet_schedule.hpp"
+
+#include "fluid/acoustic_step.hpp"
+#include "fluid/density_summation.hpp"
+#include "fluid/fluid_time_step.hpp"
+#include "fluid/transport_velocity.hpp"
+#include "fluid/viscous_force.hpp"
+#include "fsi/fluid_solid_coupling.hpp"
+#include "solid/solid_dynamics.hpp"
+#include "time/step_splitting.hpp"
+
+#include <algorithm>
+#include <limits>
+
+namespace mrsph {
+
+long long integrate_solid_over(SolidBody& solid, const Simulation& sim, Real t, Real dt) {
+  long long count = 0;
+  Real elapsed = 0.0;
+  for (bool last = false; !last;) {
+    const SplitStep step = split_remaining(dt - elapsed, solid_time_step(solid));
+    last = step.last;
+    const Vec2 g = sim.body_force_on_solids ? sim.body_force.at(t + elapsed + 0.5 * step.size) : Vec2::Zero();
+    solid_substep(solid, step.size, g);
+    elapsed += step.size;
+    ++count;
+  }
+  return count;
+}
+
+Real PositionVerletSchedule::advance_solids_only(Simulation& sim, Real max_step) {
+  // Without a fluid an "advection step" is a batch of solid steps; 200 keeps progress and the
+  // divergence checks frequent.
+  Real criterion = std::numeric_limits<Real>::infinity();
+  for (const SolidBody& solid : sim.solids()) criterion = std::min(criterion, solid_time_step(solid));
+  const Real Dt = std::min(max_step, 200.0 * criterion);
+  for (SolidBody& solid : sim.solids()) sim.steps.solid += integrate_solid_over(solid, sim, sim.time, Dt);
+  sim.time += Dt;
+  ++sim.steps.acoustic;
+  sim.check_divergence();
+  ++sim.steps.advection;
+  return Dt;
+}
+
+Real PositionVerletSchedule::advance(Simulation& sim, Real max_step) {
+  if (!sim.has_fluid()) return advance_solids_only(sim, max_step);
+  FluidBody& fluid = sim.fluid();
+  std::vector<FluidContact>& contacts = sim.fluid_contacts();
+  const NeighborList& inner = sim.fluid_inner();
+  const Real t0 = sim.time;
+  const Real Dt = std::min(advection_time_step(fluid, sim.body_force.at(t0)), max_step);
+
+  // Algorithm 1, once per advection step.
+  reinitialise_density(fluid, inner, contacts);
+  compute_viscous_force(fluid, inner, contacts);
+  correct_transport_velocity(fluid, inner, contacts);
+  for (SolidBody& solid : sim.solids()) update_solid_normals(solid);
+
+  Real elapsed = 0.0;
+  for (bool last = false; !last;) {
+    Real criterion = acoustic_time_step(fluid);
+    if (single_step_)
+      for (const SolidBody& solid : sim.solids()) criterion = std::min(criterion, solid_time_step(solid));
+    const SplitStep step = split_remaining(Dt - elapsed, criterion);
+    const Real dt = step.size;
+    last = step.last;
+
+    acoustic_first_half(fluid, inner, contacts, dt, sim.body_force.at(sim.time + 0.5 * dt));
+    for (std::size_t s = 0; s < sim.solids().size(); ++s)
+      set_force_from_fluid(sim.solid_contact(s), sim.solids()[s].particles);
+    acoustic_second_half(fluid, inner, contacts, dt);
+    for (SolidBody& solid : sim.solids()) {
+      begin_kinematics_average(solid.particles);
+      sim.steps.solid += integrate_solid_over(solid, sim, sim.time, dt);
+      end_kinematics_average(solid.particles, dt, sim.solid_kinematics);
+    }
+    elapsed += dt;
+    sim.time = last ? t0 + Dt : t0 + elapsed;
+    if (sim.inflow) sim.inflow->apply(fluid.particles, sim.time, sim.box());
+    ++sim.steps.acoustic;
+  }
+  sim.check_divergence();
+  sim.rebuild_fluid_relations();
+  ++sim.steps.advection;
+  return Dt;
+}
+
+}  // namespace mrsph

@@ -1,0 +1,25 @@
+// The position-based Verlet schedule, with multiple or single time steps (see schedule.hpp).
+#pragma once
+
+#include "time/schedule.hpp"
+
+namespace mrsph {
+
+class PositionVerletSchedule final : public Schedule {
+ public:
+  explicit PositionVerletSchedule(bool single_step) : single_step_(single_step) {}
+  std::string name() const override {
+    return single_step_ ? "single_step_position_verlet" : "multi_step_position_verlet";
+  }
+  Real advance(Simulation& sim, Real max_step) override;
+
+ private:
+  Real advance_solids_only(Simulation& sim, Real max_step);
+  bool single_step_;
+};
+
+// Integrates a solid over [t, t + dt] in sub-steps that respect its criterion and sum to dt
+// exactly (paper Eqs. 39-41). Returns the number of sub-steps.
+long long integrate_solid_over(SolidBody& solid, const Simulation& sim, Real t, Real dt);
+
+}  // namespace mrsph

@@ -1,0 +1,29 @@
+// Time-integration schedules, selected by name in a scene. Each advances a Simulation by one
+// advection step (at most `max_step`, so outputs land on exact times) and returns its size.
+//   multi_step_position_verlet   the paper's method (Algorithm 1): dual-criteria fluid steps, and
+//                                kappa solid sub-steps per acoustic step, all position-based Verlet
+//   single_step_position_verlet  the same, with one step for both: the acoustic step is the smaller
+//                                of the fluid and solid criteria (paper Eq. 26) and kappa = 1
+//   multi_step_velocity_verlet   velocity-based Verlet with multiple solid steps: the variant the
+//                                paper shows to violate momentum conservation (for comparison)
+#pragma once
+
+#include "simulation/simulation.hpp"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace mrsph {
+
+class Schedule {
+ public:
+  virtual ~Schedule() = default;
+  virtual std::string name() const = 0;
+  virtual Real advance(Simulation& sim, Real max_step) = 0;
+};
+
+std::unique_ptr<Schedule> make_schedule(const std::string& name);  // throws std::invalid_argument
+const std::vector<std::string>& schedule_names();
+
+}  // namespace mrsph

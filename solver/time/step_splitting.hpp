@@ -1,0 +1,25 @@
+// Splitting an interval into steps that respect a criterion and add up to it exactly: the next
+// step is remaining / ceil(remaining / criterion), so the steps of one interval are near-equal
+// and the last one is exactly what remains (no tiny final step, no overshoot). For the solid this
+// is the paper's kappa = [dt_ac / dt_S] + 1 sub-steps, re-evaluated every sub-step; the sub-steps
+// sum to the acoustic step exactly, which momentum conservation requires (paper section 3.3).
+#pragma once
+
+#include "core/types.hpp"
+
+#include <cmath>
+
+namespace mrsph {
+
+struct SplitStep {
+  Real size;
+  bool last;
+};
+
+inline SplitStep split_remaining(Real remaining, Real criterion) {
+  const Real pieces = std::ceil(remaining / criterion * (1.0 - 1e-12));
+  if (!(pieces > 1.0)) return {remaining, true};
+  return {remaining / pieces, false};
+}
+
+}  // namespace mrsph
