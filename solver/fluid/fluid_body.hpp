@@ -4,6 +4,7 @@
 #include "core/types.hpp"
 #include "fluid/equation_of_state.hpp"
 #include "fluid/riemann_dissipation.hpp"
+#include "kernel/lattice_moments.hpp"
 #include "kernel/wendland_c2.hpp"
 #include "neighbor/neighbor_list.hpp"
 #include "particles/boundary_view.hpp"
@@ -30,6 +31,10 @@ struct FluidOptions {
   DensityReinitialisation density = DensityReinitialisation::Internal;
   Real transport_velocity_alpha = 0.0;  // 0: no transport-velocity correction
   Real reference_velocity = 1.0;        // U_ref, a floor for the advection criterion
+  // Divide the viscous operator by its lattice second moment (kernel/lattice_moments.hpp) so the
+  // effective viscosity on a regular distribution is the physical one; off: the paper's code,
+  // whose effective viscosity is 3.6 % low at h = 1.3 dp.
+  bool viscous_lattice_correction = true;
   Real advection_cfl = 0.25;            // paper Eq. 32
   Real acoustic_cfl = 0.6;              // paper Eq. 33
 };
@@ -43,11 +48,14 @@ struct FluidBody {
   RiemannDissipation riemann;
   FluidParticles particles;
   Real lattice_number_density;  // sigma0 for this dp and h
+  Real lattice_laplacian;       // M2 for this dp and h, with the viscous regularisation 0.01 h
 
   FluidBody(std::string body_name, Real spacing, Real h_over_dp)
       : name(std::move(body_name)), dp(spacing), kernel(h_over_dp * spacing),
-        lattice_number_density(kernel.lattice_number_density(spacing)) {}
+        lattice_number_density(mrsph::lattice_number_density(kernel, spacing)),
+        lattice_laplacian(lattice_laplacian_moment(kernel, spacing, viscous_regularisation())) {}
   Real h() const { return kernel.h(); }
+  Real viscous_regularisation() const { return 0.01 * kernel.h(); }  // paper Eq. 22
 };
 
 // The fluid's view of one boundary body (rigid wall or elastic solid): the pairs within the

@@ -6,8 +6,9 @@ namespace mrsph {
 
 void compute_viscous_force(FluidBody& fluid, const NeighborList& inner, std::vector<FluidContact>& contacts) {
   FluidParticles& f = fluid.particles;
-  const Real mu = fluid.material.viscosity;
-  const Real regularisation = 0.01 * fluid.h();
+  const Real correction = fluid.options.viscous_lattice_correction ? 1.0 / fluid.lattice_laplacian : 1.0;
+  const Real mu = fluid.material.viscosity * correction;
+  const Real regularisation = fluid.viscous_regularisation();
   for (FluidContact& c : contacts) c.pair_viscous_force.assign(c.pairs.pair_count(), Vec2::Zero());
   if (mu == 0.0) {
     std::fill(f.force_prior.begin(), f.force_prior.end(), Vec2::Zero());

@@ -2,6 +2,8 @@
 //   f^v_i = 2 mu V_i sum_j V_j (v_i - v_j) / (r_ij + 0.01 h) dW/dr_ij
 //         + 2 mu V_i sum_a V_a 2 (v_i - vbar_a) / (r_ia + 0.01 h) dW/dr_ia   (no-slip boundary,
 //           mirrored velocity v^d = 2 vbar_a - v_i; METHOD.md section 3)
+// With the lattice correction (default) both sums are divided by M2, the operator's value for a
+// unit Laplacian on a regular lattice (kernel/lattice_moments.hpp).
 // The fluid-fluid and fluid-boundary parts go into F^prior; each boundary pair force is kept so the
 // boundary receives its exact opposite.
 #pragma once

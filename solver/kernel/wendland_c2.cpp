@@ -10,12 +10,4 @@ WendlandC2::WendlandC2(Real h)
   if (!(h > 0.0) || !std::isfinite(h)) throw std::invalid_argument("WendlandC2: smoothing length must be positive");
 }
 
-Real WendlandC2::lattice_number_density(Real dp) const {
-  const int n = static_cast<int>(std::ceil(cutoff() / dp)) + 1;
-  Real sum = 0.0;
-  for (int i = -n; i <= n; ++i)
-    for (int j = -n; j <= n; ++j) sum += W(dp * std::sqrt(Real(i * i + j * j)));
-  return sum;
-}
-
 }  // namespace mrsph

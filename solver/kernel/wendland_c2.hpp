@@ -29,10 +29,6 @@ class WendlandC2 {
   }
   Real W0() const { return factor_W_; }
 
-  // Sum of W over an infinite square lattice of spacing dp (origin included): the number density a
-  // particle in a full, uniform neighbourhood sees. sigma0 * dp^2 = 1.0105 for h = 1.3 dp.
-  Real lattice_number_density(Real dp) const;
-
  private:
   Real h_, inv_h_, factor_W_, factor_dW_;
 };

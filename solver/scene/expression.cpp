@@ -41,22 +41,23 @@ class Parser {
     }
   }
   double product() {
-    double v = power();
+    double v = unary();
     for (;;) {
-      if (accept('*')) v *= power();
-      else if (accept('/')) v /= power();
+      if (accept('*')) v *= unary();
+      else if (accept('/')) v /= unary();
       else return v;
     }
   }
-  double power() {
-    const double base = unary();
-    if (accept('^')) return std::pow(base, power());  // right-associative
-    return base;
-  }
+  // Unary minus binds looser than '^', as in mathematics: -2^2 = -4, 2^-1 = 0.5.
   double unary() {
     if (accept('-')) return -unary();
     if (accept('+')) return unary();
-    return primary();
+    return power();
+  }
+  double power() {
+    const double base = primary();
+    if (accept('^')) return std::pow(base, unary());  // right-associative
+    return base;
   }
   double primary() {
     skip_space();

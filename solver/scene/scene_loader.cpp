@@ -145,6 +145,7 @@ FluidBody read_fluid(const SceneNode& node, const DomainBox& box, double& budget
                   : DensityReinitialisation::Internal;
   o.transport_velocity_alpha = node.non_negative_or("transport_velocity_alpha", 0.0);
   o.reference_velocity = node.positive_or("reference_velocity", 1.0);
+  o.viscous_lattice_correction = node.flag_or("viscous_lattice_correction", o.viscous_lattice_correction);
   o.advection_cfl = node.positive_or("advection_cfl", o.advection_cfl);
   o.acoustic_cfl = node.positive_or("acoustic_cfl", o.acoustic_cfl);
   const InitialVelocity velocity = read_initial_velocity(node);

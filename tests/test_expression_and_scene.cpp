@@ -1,0 +1,109 @@
+#include "scene/expression.hpp"
+#include "scene_fixture.hpp"
+
+#include <catch2/catch.hpp>
+
+using namespace mrsph;
+
+TEST_CASE("Expressions evaluate with parameters, precedence and functions", "[scene]") {
+  ParameterTable p{{"dp", 0.1}, {"H", 4.1}};
+  CHECK(evaluate_expression("4 * dp", p) == Approx(0.4));
+  CHECK(evaluate_expression("H / 2 + 1", p) == Approx(3.05));
+  CHECK(evaluate_expression("-2^2", p) == Approx(-4.0));
+  CHECK(evaluate_expression("2^3^2", p) == Approx(512.0));
+  CHECK(evaluate_expression("2^-1", p) == Approx(0.5));
+  CHECK(evaluate_expression("sqrt(16) * cos(0) + max(1, 3)", p) == Approx(7.0));
+  CHECK(evaluate_expression("2 * pi", p) == Approx(6.283185307));
+  CHECK_THROWS_WITH(evaluate_expression("4 * dq", p), Catch::Contains("unknown parameter 'dq'"));
+  CHECK_THROWS_WITH(evaluate_expression("(1 + 2", p), Catch::Contains("missing ')'"));
+  CHECK_THROWS_WITH(evaluate_expression("1 +", p), Catch::Contains("unexpected end"));
+}
+
+namespace {
+std::string replace(std::string text, const std::string& from, const std::string& to) {
+  const auto at = text.find(from);
+  REQUIRE(at != std::string::npos);
+  return text.replace(at, from.size(), to);
+}
+
+// A small valid scene: a periodic channel with two walls. {EXTRA} is spliced into the root object.
+std::string channel_scene(const std::string& fluid_extra = "", const std::string& extra = "") {
+  return R"({
+    "parameters": {"dp": 0.05, "L": 1.0},
+    "domain": {"lower": [0, -0.3], "upper": ["L", 1.3], "periodic": [true, false]},
+    "fluid": {"dp": "dp", "region": {"rectangle": {"lower": [0, 0], "upper": ["L", 1]}},
+              "density": 1, "sound_speed": 10, "viscosity": 0.01)" + fluid_extra + R"(},
+    "walls": [{"name": "bottom", "dp": "dp", "region": {"rectangle": {"lower": [0, "-4*dp"], "upper": ["L", 0]}}},
+              {"name": "top", "dp": "dp", "region": {"rectangle": {"lower": [0, 1], "upper": ["L", "1+4*dp"]}}}],
+    "end_time": 1.0)" + extra + "}";
+}
+}  // namespace
+
+TEST_CASE("A valid scene builds bodies with the expected particle counts", "[scene]") {
+  LoadedScene s = scene_from(channel_scene());
+  REQUIRE(s.simulation->has_fluid());
+  CHECK(s.simulation->fluid().particles.size() == 20 * 20);
+  CHECK(s.simulation->walls().size() == 2);
+  CHECK(s.simulation->walls()[0].particles.size() == 20 * 4);
+  // Wall normals point into the fluid.
+  const auto& bottom = s.simulation->walls()[0].particles;
+  for (std::size_t a = 0; a < bottom.size(); ++a)
+    if (bottom.pos[a].y() > -0.05) CHECK(bottom.normal[a].y() == Approx(1.0).margin(1e-9));
+}
+
+TEST_CASE("Bad scenes give one clear error naming the key", "[scene]") {
+  CHECK_THROWS_WITH(scene_from(channel_scene(", \"viscosty\": 0.1")),
+                    Catch::Contains("'fluid.viscosty'") && Catch::Contains("unknown key"));
+  CHECK_THROWS_WITH(scene_from(replace(channel_scene(), "\"sound_speed\": 10", "\"sound_speed\": -3")),
+                    Catch::Contains("'fluid.sound_speed'") && Catch::Contains("positive"));
+  CHECK_THROWS_WITH(scene_from(channel_scene(", \"equation_of_state\": \"ideal_gas\"")),
+                    Catch::Contains("'fluid.equation_of_state'") && Catch::Contains("expected one of"));
+  CHECK_THROWS_WITH(scene_from(channel_scene(", \"viscosity\": \"abc\"")), Catch::Contains("unknown parameter 'abc'"));
+  CHECK_THROWS_WITH(scene_from(channel_scene(", \"viscosity\": [1]")),
+                    Catch::Contains("'fluid.viscosity'") && Catch::Contains("expected a number"));
+  CHECK_THROWS_WITH(scene_from(R"({"domain": {"lower": [0, 0], "upper": [1, 1]}, "end_time": 1})"),
+                    Catch::Contains("neither a fluid nor a solid"));
+  CHECK_THROWS_WITH(scene_from(channel_scene("", R"(, "observers": [{"name": "p", "body": "nowhere", "point": [0.5, 0.5], "quantity": "velocity"}])")),
+                    Catch::Contains("no fluid or solid body named 'nowhere'"));
+}
+
+TEST_CASE("Non-positive spacing, empty and overlapping bodies are refused", "[scene]") {
+  const std::string s = channel_scene();
+  CHECK_THROWS_WITH(scene_from(replace(s, "\"dp\": 0.05", "\"dp\": 0")), Catch::Contains("positive"));
+  CHECK_THROWS_WITH(scene_from(replace(s, "\"dp\": 0.05", "\"dp\": -0.05")), Catch::Contains("positive"));
+  // A wall thinner than half a particle spacing has no particles.
+  CHECK_THROWS_WITH(scene_from(replace(s, "\"upper\": [\"L\", 0]", "\"upper\": [\"L\", \"-3.9*dp\"]")),
+                    Catch::Contains("has no particles"));
+  // A wall that reaches into the fluid.
+  CHECK_THROWS_WITH(scene_from(replace(s, "\"upper\": [\"L\", 0]", "\"upper\": [\"L\", 0.3]")),
+                    Catch::Contains("overlap"));
+}
+
+TEST_CASE("h_F < h_S is refused: the method needs the fluid's kernel to be the larger", "[scene]") {
+  const std::string solid = R"(, "solids": [{"name": "plate", "dp": 0.1,
+      "region": {"rectangle": {"lower": [0.2, 1.1], "upper": [0.8, 1.3]}},
+      "material": {"model": "neo_hookean", "density": 1, "youngs_modulus": 100, "poisson_ratio": 0.3}}])";
+  std::string s = replace(channel_scene("", solid), "\"upper\": [\"L\", 1.3]", "\"upper\": [\"L\", 1.5]");
+  s = replace(s, "\"upper\": [\"L\", \"1+4*dp\"]", "\"upper\": [\"L\", 1.05]");
+  CHECK_THROWS_WITH(scene_from(s), Catch::Contains("h_F >= h_S"));
+}
+
+TEST_CASE("Overrides replace values by path, and refuse unknown paths", "[scene]") {
+  Json doc = Json::parse(channel_scene());
+  apply_override(doc, "parameters.dp=0.025", "t");
+  apply_override(doc, "walls[1].name=\"lid\"", "t");
+  apply_override(doc, "fluid.transport_velocity_alpha=0.25", "t");  // an optional key absent from the file
+  LoadedScene s = build_scene(doc, "t");
+  CHECK(s.simulation->fluid().particles.size() == 40 * 40);
+  CHECK(s.simulation->walls()[1].name == "lid");
+  CHECK(s.simulation->fluid().options.transport_velocity_alpha == 0.25);
+  CHECK_THROWS_WITH(apply_override(doc, "fluidd.dp=1", "t"), Catch::Contains("no key 'fluidd'"));
+  CHECK_THROWS_WITH(apply_override(doc, "walls[7].dp=1", "t"), Catch::Contains("no element [7]"));
+  CHECK_THROWS_WITH(apply_override(doc, "nonsense", "t"), Catch::Contains("path=value"));
+}
+
+TEST_CASE("A scene needing more particles than the limit is refused before allocation", "[scene]") {
+  SceneLimits limits;
+  limits.max_particles = 500;
+  CHECK_THROWS_WITH(scene_from(channel_scene(), limits), Catch::Contains("would need up to"));
+}

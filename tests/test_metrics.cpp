@@ -1,0 +1,59 @@
+#include "metrics/convergence.hpp"
+#include "metrics/signal_metrics.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+using namespace mrsph::verification;
+
+TEST_CASE("Oscillation metrics recover mean, amplitude and frequency of a sine", "[metrics]") {
+  std::vector<double> t, y;
+  for (int k = 0; k <= 20000; ++k) {
+    t.push_back(k * 0.01);
+    // settling transient, then 0.8 sin(2 pi 0.19 t) about 2.0
+    const double settle = t.back() < 20 ? 0.5 * std::exp(-t.back()) : 0.0;
+    y.push_back(2.0 + 0.8 * std::sin(2 * M_PI * 0.19 * t.back()) + settle);
+  }
+  const auto s = oscillation_stats(t, y, 50.0);
+  REQUIRE(s);
+  CHECK(s->mean == Approx(2.0).margin(2e-3));
+  CHECK(s->amplitude == Approx(0.8).epsilon(1e-4));
+  CHECK(s->frequency == Approx(0.19).epsilon(1e-4));
+  CHECK(s->cycles >= 25);
+  const auto f = spectral_peak_frequency(t, y, 50.0, 0.05, 1.0);
+  REQUIRE(f);
+  CHECK(*f == Approx(0.19).epsilon(2e-3));
+}
+
+TEST_CASE("Oscillation metrics refuse a signal with too few cycles", "[metrics]") {
+  std::vector<double> t{0, 1, 2, 3, 4, 5, 6, 7, 8, 9}, y{0, 1, 0, -1, 0, 1, 0, -1, 0, 1};
+  CHECK_FALSE(oscillation_stats(t, y, 8.5));
+}
+
+TEST_CASE("Curve comparison: RMS and max error at the reference times, and the peaks", "[metrics]") {
+  std::vector<double> t_run, y_run;
+  for (int k = 0; k <= 400; ++k) { t_run.push_back(k * 0.001); y_run.push_back(std::sin(10 * t_run.back())); }
+  const std::vector<double> t_ref{0.05, 0.1, 0.15, 0.2, 0.25};
+  std::vector<double> y_ref;
+  for (double s : t_ref) y_ref.push_back(std::sin(10 * s) + 0.01);  // a constant offset of 0.01
+  const auto c = compare_curves(t_run, y_run, t_ref, y_ref);
+  REQUIRE(c);
+  CHECK(c->rms_error == Approx(0.01).epsilon(1e-3));
+  CHECK(c->max_error == Approx(0.01).epsilon(1e-3));
+  CHECK(c->points == 5);
+  CHECK(c->peak_time == Approx(M_PI / 20).margin(1e-3));
+  CHECK(c->reference_peak_time == Approx(0.15));
+}
+
+TEST_CASE("Three-grid convergence recovers order, limit and GCI of a power law", "[metrics]") {
+  // f(h) = 0.855 + 0.2 h^2 at h = 4, 2, 1 (ratio 2).
+  auto f = [](double h) { return 0.855 + 0.2 * h * h / 16.0; };
+  const auto c = three_grid_convergence(f(4), f(2), f(1), 2.0);
+  REQUIRE(c);
+  CHECK(c->observed_order == Approx(2.0).epsilon(1e-12));
+  CHECK(c->extrapolated == Approx(0.855).epsilon(1e-12));
+  CHECK(c->monotone);
+  CHECK(c->gci == Approx(1.25 * std::abs((f(1) - f(2)) / f(1)) / 3.0).epsilon(1e-12));
+  CHECK(order_from_errors(0.04, 0.01, 2.0) == Approx(2.0));
+}

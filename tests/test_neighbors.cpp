@@ -1,0 +1,116 @@
+#include "neighbor/neighbor_list.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <map>
+#include <random>
+#include <set>
+#include <utility>
+
+using namespace mrsph;
+
+namespace {
+
+Vec2Array random_points(std::size_t n, const Vec2& lo, const Vec2& hi, unsigned seed) {
+  std::mt19937 gen(seed);
+  std::uniform_real_distribution<double> ux(lo.x(), hi.x()), uy(lo.y(), hi.y());
+  Vec2Array p(n);
+  for (auto& x : p) x = Vec2(ux(gen), uy(gen));
+  return p;
+}
+
+// Brute force: every pair within the cutoff under the minimum-image convention.
+std::map<std::pair<int, int>, double> brute_force(const Vec2Array& q, const Vec2Array& t, const DomainBox& box,
+                                                  double cutoff, bool exclude_self) {
+  std::map<std::pair<int, int>, double> pairs;
+  for (std::size_t i = 0; i < q.size(); ++i)
+    for (std::size_t j = 0; j < t.size(); ++j) {
+      if (exclude_self && i == j) continue;
+      const double r = box.difference(q[i], t[j]).norm();
+      if (r < cutoff) pairs[{int(i), int(j)}] = r;
+    }
+  return pairs;
+}
+
+std::map<std::pair<int, int>, double> from_list(const NeighborList& list) {
+  std::map<std::pair<int, int>, double> pairs;
+  for (std::size_t i = 0; i < list.size(); ++i)
+    for (const Neighbor& n : list.of(i)) pairs[{int(i), n.j}] = n.r;
+  return pairs;
+}
+
+void compare(const std::map<std::pair<int, int>, double>& a, const std::map<std::pair<int, int>, double>& b) {
+  REQUIRE(a.size() == b.size());
+  for (const auto& [key, r] : a) {
+    const auto it = b.find(key);
+    REQUIRE(it != b.end());
+    CHECK(it->second == Approx(r).margin(1e-12));
+  }
+}
+
+}  // namespace
+
+TEST_CASE("Cell-list neighbour search equals brute force", "[neighbors]") {
+  const Vec2 lo(0.0, 0.0), hi(1.3, 0.9);
+  for (bool periodic_x : {false, true})
+    for (bool periodic_y : {false, true}) {
+      DomainBox box{lo, hi, {periodic_x, periodic_y}};
+      const Vec2Array fluid = random_points(700, lo, hi, 1);
+      const Vec2Array solid = random_points(400, lo, hi, 2);
+      const WendlandC2 k_fluid(0.04), k_solid(0.023);
+
+      SECTION("inner, equal h") {
+        CellGrid grid(box, k_fluid.cutoff());
+        grid.build(fluid);
+        NeighborList list;
+        list.build(fluid, grid, k_fluid, true);
+        compare(brute_force(fluid, fluid, box, k_fluid.cutoff(), true), from_list(list));
+      }
+      SECTION("contact between different h uses the larger h") {
+        const WendlandC2 contact(std::max(k_fluid.h(), k_solid.h()));
+        CellGrid grid(box, contact.cutoff());
+        grid.build(solid);
+        NeighborList list;
+        list.build(fluid, grid, contact, false);
+        compare(brute_force(fluid, solid, box, 2 * k_fluid.h(), false), from_list(list));
+      }
+    }
+}
+
+TEST_CASE("Cached pair geometry is exactly antisymmetric, also across periodic ends", "[neighbors]") {
+  DomainBox box{Vec2(-2.0, 0.0), Vec2(1.0, 1.0), {true, false}};
+  const Vec2Array p = random_points(500, box.lower, box.upper, 7);
+  const WendlandC2 k(0.05);
+  CellGrid grid(box, k.cutoff());
+  grid.build(p);
+  NeighborList list;
+  list.build(p, grid, k, true);
+  std::map<std::pair<int, int>, Vec2> e;
+  for (std::size_t i = 0; i < list.size(); ++i)
+    for (const Neighbor& n : list.of(i)) e[{int(i), n.j}] = n.e * n.dW;
+  for (const auto& [key, g] : e) {
+    const auto it = e.find({key.second, key.first});
+    REQUIRE(it != e.end());
+    CHECK(it->second.x() == -g.x());  // bitwise, not approximately
+    CHECK(it->second.y() == -g.y());
+  }
+}
+
+TEST_CASE("Transposed contacts list every pair of each target once", "[neighbors]") {
+  DomainBox box{Vec2(0, 0), Vec2(1, 1), {false, false}};
+  const Vec2Array q = random_points(300, box.lower, box.upper, 3), t = random_points(200, box.lower, box.upper, 4);
+  const WendlandC2 k(0.06);
+  CellGrid grid(box, k.cutoff());
+  grid.build(t);
+  NeighborList list;
+  list.build(q, grid, k, false);
+  TransposedContacts tr;
+  tr.build(list, t.size());
+  std::size_t total = 0;
+  for (std::size_t a = 0; a < t.size(); ++a)
+    for (Index k_pair : tr.of(a)) {
+      CHECK(list.entry(k_pair).j == Index(a));
+      ++total;
+    }
+  CHECK(total == list.pair_count());
+}

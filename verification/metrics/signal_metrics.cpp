@@ -1,0 +1,145 @@
+#include "metrics/signal_metrics.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <stdexcept>
+
+namespace mrsph::verification {
+
+double interpolate(const std::vector<double>& t, const std::vector<double>& y, double s) {
+  if (t.empty()) throw std::invalid_argument("interpolate: empty signal");
+  if (s <= t.front()) return y.front();
+  if (s >= t.back()) return y.back();
+  const auto it = std::upper_bound(t.begin(), t.end(), s);
+  const std::size_t k = static_cast<std::size_t>(it - t.begin());
+  const double w = (s - t[k - 1]) / (t[k] - t[k - 1]);
+  return (1.0 - w) * y[k - 1] + w * y[k];
+}
+
+namespace {
+
+double mean_of(const std::vector<double>& v) { return std::accumulate(v.begin(), v.end(), 0.0) / v.size(); }
+double spread_of(const std::vector<double>& v) {
+  if (v.size() < 2) return 0.0;
+  const double m = mean_of(v);
+  double s = 0.0;
+  for (double x : v) s += (x - m) * (x - m);
+  return std::sqrt(s / (v.size() - 1));
+}
+
+// Time-weighted (trapezoidal) mean of y over the samples [first, last).
+double time_mean(const std::vector<double>& t, const std::vector<double>& y, std::size_t first, std::size_t last) {
+  double area = 0.0;
+  for (std::size_t k = first + 1; k < last; ++k) area += 0.5 * (y[k] + y[k - 1]) * (t[k] - t[k - 1]);
+  const double span = t[last - 1] - t[first];
+  return span > 0.0 ? area / span : y[first];
+}
+
+}  // namespace
+
+std::optional<OscillationStats> oscillation_stats(const std::vector<double>& t, const std::vector<double>& y,
+                                                  double settle_time) {
+  if (t.size() != y.size()) throw std::invalid_argument("oscillation_stats: t and y differ in length");
+  const std::size_t first = static_cast<std::size_t>(std::lower_bound(t.begin(), t.end(), settle_time) - t.begin());
+  if (t.size() - first < 8) return std::nullopt;
+  OscillationStats stats;
+  std::vector<double> crossings;  // times of up-crossings of the mean
+  std::vector<std::size_t> crossing_index;
+  auto find_crossings = [&] {
+    crossings.clear();
+    crossing_index.clear();
+    for (std::size_t k = first + 1; k < t.size(); ++k) {
+      const double a = y[k - 1] - stats.mean, b = y[k] - stats.mean;
+      if (a < 0.0 && b >= 0.0) {
+        crossings.push_back(t[k - 1] + (t[k] - t[k - 1]) * (-a) / (b - a));
+        crossing_index.push_back(k);
+      }
+    }
+  };
+  // The mean over the whole window is biased by a partial cycle; take it again over whole cycles
+  // (first to last up-crossing) and find the crossings of that mean.
+  stats.mean = time_mean(t, y, first, t.size());
+  find_crossings();
+  if (crossings.size() < 3) return std::nullopt;
+  stats.mean = time_mean(t, y, crossing_index.front() - 1, crossing_index.back());
+  find_crossings();
+  if (crossings.size() < 3) return std::nullopt;
+  std::vector<double> amplitudes, frequencies;
+  for (std::size_t c = 0; c + 1 < crossings.size(); ++c) {
+    const auto lo = y.begin() + static_cast<long>(crossing_index[c] - 1);
+    const auto hi = y.begin() + static_cast<long>(crossing_index[c + 1]);
+    const auto [mn, mx] = std::minmax_element(lo, hi);
+    amplitudes.push_back(0.5 * (*mx - *mn));
+    frequencies.push_back(1.0 / (crossings[c + 1] - crossings[c]));
+  }
+  stats.cycles = static_cast<int>(amplitudes.size());
+  stats.amplitude = mean_of(amplitudes);
+  stats.amplitude_spread = spread_of(amplitudes);
+  stats.frequency = (crossings.size() - 1) / (crossings.back() - crossings.front());
+  stats.frequency_spread = spread_of(frequencies);
+  return stats;
+}
+
+std::optional<double> spectral_peak_frequency(const std::vector<double>& t, const std::vector<double>& y,
+                                              double settle_time, double f_min, double f_max) {
+  const std::size_t first = static_cast<std::size_t>(std::lower_bound(t.begin(), t.end(), settle_time) - t.begin());
+  if (t.size() - first < 16) return std::nullopt;
+  const double t0 = t[first], t1 = t.back(), span = t1 - t0;
+  if (!(span > 0.0) || span * f_min < 1.0) return std::nullopt;
+  const std::size_t n = 4096;
+  std::vector<double> s(n);
+  const double dt = span / (n - 1);
+  for (std::size_t k = 0; k < n; ++k) s[k] = interpolate(t, y, t0 + k * dt);
+  const double m = mean_of(s);
+  for (std::size_t k = 0; k < n; ++k) s[k] = (s[k] - m) * 0.5 * (1.0 - std::cos(2.0 * M_PI * k / (n - 1)));
+  // Scan the DFT on a grid 20 times finer than 1/span, then refine by a parabola through the peak.
+  const double df = 0.05 / span;
+  double best_f = f_min, best_p = -1.0, prev = 0.0, next = 0.0;
+  std::vector<double> power;
+  for (double f = f_min; f <= f_max; f += df) {
+    double re = 0.0, im = 0.0;
+    for (std::size_t k = 0; k < n; ++k) {
+      const double phase = 2.0 * M_PI * f * k * dt;
+      re += s[k] * std::cos(phase);
+      im -= s[k] * std::sin(phase);
+    }
+    power.push_back(re * re + im * im);
+  }
+  std::size_t kbest = 0;
+  for (std::size_t k = 0; k < power.size(); ++k)
+    if (power[k] > best_p) { best_p = power[k]; kbest = k; }
+  best_f = f_min + kbest * df;
+  if (kbest > 0 && kbest + 1 < power.size()) {
+    prev = power[kbest - 1];
+    next = power[kbest + 1];
+    const double denom = prev - 2.0 * best_p + next;
+    if (denom < 0.0) best_f += 0.5 * (prev - next) / denom * df;
+  }
+  return best_f;
+}
+
+std::optional<CurveComparison> compare_curves(const std::vector<double>& t_run, const std::vector<double>& y_run,
+                                              const std::vector<double>& t_ref, const std::vector<double>& y_ref) {
+  if (t_run.empty() || t_ref.empty()) return std::nullopt;
+  CurveComparison c;
+  double sum2 = 0.0;
+  c.reference_peak_value = -INFINITY;
+  for (std::size_t k = 0; k < t_ref.size(); ++k) {
+    if (t_ref[k] < t_run.front() || t_ref[k] > t_run.back()) continue;
+    const double e = interpolate(t_run, y_run, t_ref[k]) - y_ref[k];
+    sum2 += e * e;
+    c.max_error = std::max(c.max_error, std::abs(e));
+    ++c.points;
+    if (y_ref[k] > c.reference_peak_value) { c.reference_peak_value = y_ref[k]; c.reference_peak_time = t_ref[k]; }
+  }
+  if (c.points == 0) return std::nullopt;
+  c.rms_error = std::sqrt(sum2 / c.points);
+  const double lo = t_ref.front(), hi = t_ref.back();
+  c.peak_value = -INFINITY;
+  for (std::size_t k = 0; k < t_run.size(); ++k)
+    if (t_run[k] >= lo && t_run[k] <= hi && y_run[k] > c.peak_value) { c.peak_value = y_run[k]; c.peak_time = t_run[k]; }
+  return c;
+}
+
+}  // namespace mrsph::verification

@@ -1,0 +1,49 @@
+// Metrics of time signals (VERIFICATION.md, "Metrics"); unit-tested on synthetic signals.
+//   oscillation:   after a settling time, the mean of the signal, the cycles between successive
+//                  up-crossings of (signal - mean), and per cycle half the peak-to-peak; amplitude
+//                  and frequency are averages over cycles, with their spread across cycles.
+//   spectral peak: the frequency of the largest peak of a Hann-windowed Fourier transform of the
+//                  uniformly resampled signal (a cross-check of the up-crossing frequency).
+//   curve error:   a run compared with a reference curve at the reference's times (linear
+//                  interpolation of the run): RMS and maximum absolute error; the peaks of both.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+namespace mrsph::verification {
+
+struct OscillationStats {
+  double mean = 0.0;
+  double amplitude = 0.0;         // mean over cycles of half the peak-to-peak
+  double amplitude_spread = 0.0;  // standard deviation over cycles
+  double frequency = 0.0;         // 1 / mean period
+  double frequency_spread = 0.0;  // standard deviation of 1 / period over cycles
+  int cycles = 0;
+};
+
+// Returns nothing if fewer than two full cycles lie after `settle_time`.
+std::optional<OscillationStats> oscillation_stats(const std::vector<double>& t, const std::vector<double>& y,
+                                                  double settle_time);
+
+// Frequency of the largest spectral peak in [f_min, f_max]; nothing if the window is too short.
+std::optional<double> spectral_peak_frequency(const std::vector<double>& t, const std::vector<double>& y,
+                                              double settle_time, double f_min, double f_max);
+
+struct CurveComparison {
+  double rms_error = 0.0;
+  double max_error = 0.0;
+  int points = 0;              // reference points inside the run's time span
+  double peak_value = 0.0;     // run's maximum over the reference window
+  double peak_time = 0.0;
+  double reference_peak_value = 0.0;
+  double reference_peak_time = 0.0;
+};
+
+std::optional<CurveComparison> compare_curves(const std::vector<double>& t_run, const std::vector<double>& y_run,
+                                              const std::vector<double>& t_ref, const std::vector<double>& y_ref);
+
+// Linear interpolation of (t, y) at time s (clamped to the ends). t must be increasing.
+double interpolate(const std::vector<double>& t, const std::vector<double>& y, double s);
+
+}  // namespace mrsph::verification

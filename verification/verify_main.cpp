@@ -1,0 +1,106 @@
+// verify: the verification and benchmark harness. See `verify --help`.
+#include "io/atomic_file.hpp"
+#include "suites/suite.hpp"
+
+#include <CLI/CLI.hpp>
+#include <fmt/chrono.h>
+#include <fmt/format.h>
+#include <tbb/global_control.h>
+#include <tbb/info.h>
+
+#include <chrono>
+#include <ctime>
+#include <filesystem>
+#include <iostream>
+
+#ifndef MRSPH_SOURCE_DIR
+#define MRSPH_SOURCE_DIR "."
+#endif
+
+namespace fs = std::filesystem;
+using mrsph::verification::Json;
+
+int main(int argc, char** argv) {
+  std::string suite_list_help;
+  for (const auto& s : mrsph::verification::registered_suites())
+    suite_list_help += fmt::format("  {:<18} {}\n", s.name, s.description);
+
+  CLI::App app{"verify: runs the verification suites of mrsph and checks the results against analytic solutions,\n"
+               "published benchmarks and experiments. Each suite writes summary.json (metrics, checks with\n"
+               "value / reference / tolerance / verdict, cost), CSVs and figures into its own directory.\n\n"
+               "Suites:\n" + suite_list_help + "  all                every suite\n\n"
+               "Exit status: 0 if every check passed; 1 if a check failed; 2 on bad usage or input."};
+  std::vector<std::string> suites;
+  bool quick = false;
+  std::string out_dir, reference_dir, project_dir = MRSPH_SOURCE_DIR;
+  int threads = 0;
+  app.add_option("--suite", suites, "suite(s) to run (repeatable, or 'all')")->required();
+  app.add_flag("--quick", quick, "CI-sized runs (minutes) instead of the full ones");
+  app.add_option("--out", out_dir, "run directory (default: reports/runs/<date-time>[-quick])");
+  app.add_option("--reference-dir", reference_dir,
+                 "reference data (e.g. ../shared/reference-data); comparisons that need it are skipped, and said so, without it");
+  app.add_option("--threads", threads, "worker threads (default: all cores)")->check(CLI::NonNegativeNumber);
+  app.add_option("--project-dir", project_dir, "the project's source tree (scenes, scripts)")->check(CLI::ExistingDirectory);
+  CLI11_PARSE(app, argc, argv);
+
+  const auto& registry = mrsph::verification::registered_suites();
+  std::vector<const mrsph::verification::SuiteEntry*> selected;
+  for (const std::string& name : suites) {
+    if (name == "all") {
+      for (const auto& s : registry) selected.push_back(&s);
+      continue;
+    }
+    const auto it = std::find_if(registry.begin(), registry.end(), [&](const auto& s) { return s.name == name; });
+    if (it == registry.end()) {
+      fmt::print(stderr, "error: --suite: unknown suite '{}'; run verify --help for the list\n", name);
+      return 2;
+    }
+    selected.push_back(&*it);
+  }
+  if (!reference_dir.empty() && !fs::is_directory(reference_dir)) {
+    fmt::print(stderr, "error: --reference-dir: '{}' is not a directory\n", reference_dir);
+    return 2;
+  }
+
+  std::unique_ptr<tbb::global_control> thread_limit;
+  if (threads > 0) thread_limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, threads);
+  const int used_threads = threads > 0 ? threads : tbb::info::default_concurrency();
+
+  fs::path run_dir = out_dir;
+  if (run_dir.empty()) {
+    const std::time_t now = std::time(nullptr);
+    run_dir = fs::path(project_dir) / "reports" / "runs" / fmt::format("{:%Y%m%d-%H%M%S}{}", fmt::localtime(now), quick ? "-quick" : "");
+  }
+
+  bool all_passed = true;
+  Json index = Json::array();
+  for (const auto* entry : selected) {
+    mrsph::verification::SuiteContext ctx;
+    ctx.quick = quick;
+    ctx.out_dir = run_dir / entry->name;
+    if (!reference_dir.empty()) ctx.reference_dir = fs::path(reference_dir);
+    ctx.project_dir = project_dir;
+    ctx.threads = used_threads;
+    ctx.log = [](const std::string& line) { fmt::print(stderr, "  {}\n", line); };
+    fs::create_directories(ctx.out_dir);
+    fmt::print("== suite {} ({}) -> {}\n", entry->name, quick ? "quick" : "full", ctx.out_dir.string());
+    const auto start = std::chrono::steady_clock::now();
+    try {
+      const auto summary = entry->run(ctx);
+      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      fmt::print("{}", summary.checks_table());
+      fmt::print("== suite {}: {} in {:.1f} s\n\n", entry->name, summary.passed() ? "PASSED" : "FAILED", seconds);
+      all_passed = all_passed && summary.passed();
+      index.push_back({{"suite", entry->name}, {"passed", summary.passed()}, {"summary", entry->name + "/summary.json"},
+                       {"wall_s", seconds}});
+    } catch (const std::exception& e) {
+      fmt::print(stderr, "error: suite {}: {}\n", entry->name, e.what());
+      all_passed = false;
+      index.push_back({{"suite", entry->name}, {"passed", false}, {"error", e.what()}});
+    }
+  }
+  const Json run_index = {{"mode", quick ? "quick" : "full"}, {"passed", all_passed}, {"threads", used_threads}, {"suites", index}};
+  mrsph::write_file_atomically(run_dir / "index.json", run_index.dump(2) + "\n");
+  fmt::print("verify: {} ({})\n", all_passed ? "all checks passed" : "some checks FAILED", (run_dir / "index.json").string());
+  return all_passed ? 0 : 1;
+}
