@@ -57,10 +57,29 @@ Real solid_time_step(const SolidBody& solid) {
   return solid.options.cfl / rate;
 }
 
+void compute_deformation_rate(SolidBody& solid) {
+  SolidParticles& s = solid.particles;
+  parallel_for_each(s.size(), [&](std::size_t a) { s.dF_dt[a] = velocity_gradient_sum(s, solid.inner, a) * s.B[a]; });
+}
+
+void compute_stress(SolidBody& solid) {
+  SolidParticles& s = solid.particles;
+  parallel_for_each(s.size(), [&](std::size_t a) {
+    s.rho[a] = solid.material.density() / s.F[a].determinant();
+    s.stress_PBt[a] = solid.material.first_piola_kirchhoff(s.F[a]) * s.B[a].transpose();
+  });
+}
+
+Vec2 internal_force(const SolidBody& solid, std::size_t a) {
+  const SolidParticles& s = solid.particles;
+  Vec2 force = Vec2::Zero();
+  for (const Neighbor& n : solid.inner.of(a)) force += (s.vol0[n.j] * n.dW) * ((s.stress_PBt[a] + s.stress_PBt[n.j]) * n.e);
+  return s.vol0[a] * force;
+}
+
 void solid_substep(SolidBody& solid, Real dt, const Vec2& body_acceleration) {
   SolidParticles& s = solid.particles;
   const ElasticMaterial& material = solid.material;
-  const NeighborList& inner = solid.inner;
 
   parallel_for_each(s.size(), [&](std::size_t a) {
     if (!s.constrained[a]) s.pos[a] += 0.5 * dt * s.vel[a];
@@ -75,15 +94,12 @@ void solid_substep(SolidBody& solid, Real dt, const Vec2& body_acceleration) {
       s.pos[a] = s.pos0[a];
       return;
     }
-    Vec2 force = Vec2::Zero();
-    for (const Neighbor& n : inner.of(a)) force += (s.vol0[n.j] * n.dW) * ((s.stress_PBt[a] + s.stress_PBt[n.j]) * n.e);
-    force *= s.vol0[a];
-    s.acc[a] = (force + s.force_prior[a]) / s.mass[a] + body_acceleration;
+    s.acc[a] = (internal_force(solid, a) + s.force_prior[a]) / s.mass[a] + body_acceleration;
     s.vel[a] += dt * s.acc[a];
     s.pos[a] += 0.5 * dt * s.vel[a];
   });
   parallel_for_each(s.size(), [&](std::size_t a) {
-    s.dF_dt[a] = velocity_gradient_sum(s, inner, a) * s.B[a];
+    s.dF_dt[a] = velocity_gradient_sum(s, solid.inner, a) * s.B[a];
     s.F[a] += 0.5 * dt * s.dF_dt[a];
   });
 }

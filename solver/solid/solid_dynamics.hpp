@@ -21,6 +21,14 @@ Real solid_time_step(const SolidBody& solid);
 // step of r and F. Constrained particles keep r = r0 and v = 0; their F still evolves.
 void solid_substep(SolidBody& solid, Real dt, const Vec2& body_acceleration);
 
+// The operators a sub-step is made of, exposed for tests and diagnostics:
+// dF/dt of every particle from the current velocities.
+void compute_deformation_rate(SolidBody& solid);
+// rho = rho0 / J and P B^T of every particle from the current F.
+void compute_stress(SolidBody& solid);
+// f_a from the stored P B^T (excluding F^prior and body force).
+Vec2 internal_force(const SolidBody& solid, std::size_t a);
+
 // Current normals n = R(F) n0, with R the rotation part of F (METHOD.md section 3).
 void update_solid_normals(SolidBody& solid);
 

@@ -1,4 +1,5 @@
 #include "suites/suite.hpp"
+#include "suites/oscillating_plate_suite.hpp"
 #include "suites/womersley_suite.hpp"
 
 namespace mrsph::verification {
@@ -7,6 +8,8 @@ const std::vector<SuiteEntry>& registered_suites() {
   static const std::vector<SuiteEntry> suites{
       {"womersley", "periodic channel driven by an oscillating pressure gradient vs the analytic Womersley profile",
        run_womersley_suite},
+      {"oscillating-plate", "cantilever plate in its first bending mode vs Euler-Bernoulli; convergence, energy, nu = 0.49",
+       run_oscillating_plate_suite},
   };
   return suites;
 }

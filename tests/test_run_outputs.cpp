@@ -1,0 +1,71 @@
+#include "io/vtp_writer.hpp"
+#include "observers/snapshot.hpp"
+#include "scene_fixture.hpp"
+#include "simulation/runner.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <regex>
+#include <sstream>
+
+using namespace mrsph;
+
+namespace {
+const char* kChannel = R"({
+    "parameters": {"dp": 0.05},
+    "domain": {"lower": [0, -0.3], "upper": [1, 1.3], "periodic": [true, false]},
+    "fluid": {"dp": "dp", "region": {"rectangle": {"lower": [0, 0], "upper": [1, 1]}}, "density": 1, "sound_speed": 10,
+              "viscosity": 0.01, "initial_velocity": {"type": "uniform", "value": [1, 0]}},
+    "walls": [{"name": "bottom", "dp": "dp", "region": {"rectangle": {"lower": [0, "-4*dp"], "upper": [1, 0]}}},
+              {"name": "top", "dp": "dp", "region": {"rectangle": {"lower": [0, 1], "upper": [1, "1+4*dp"]}}}],
+    "end_time": 0.5})";
+}
+
+TEST_CASE("A diverging run is stopped and reported with time, step, body and particle", "[run]") {
+  // An acoustic step five times the CFL limit (paper Eq. 33 uses 0.6) is unstable.
+  Json doc = Json::parse(kChannel);
+  doc["fluid"]["acoustic_cfl"] = 5.0;
+  doc["fluid"]["advection_cfl"] = 5.0;
+  LoadedScene s = build_scene(doc, "unstable.json");
+  RunOptions options;
+  options.end_time = 0.5;
+  const RunResult r = run_simulation(*s.simulation, *s.schedule, s.observers, options);
+  REQUIRE_FALSE(r.completed);
+  REQUIRE(r.divergence);
+  CHECK(r.divergence->body == "fluid");
+  CHECK(r.divergence->particle >= 0);
+  CHECK(r.divergence->time > 0.0);
+  CHECK(r.divergence->time < 0.5);
+  CHECK(r.divergence->step >= 0);
+  CHECK_FALSE(r.divergence->reason.empty());
+}
+
+TEST_CASE("A stable run of the same scene completes", "[run]") {
+  LoadedScene s = scene_from(kChannel);
+  RunOptions options;
+  options.end_time = 0.05;
+  const RunResult r = run_simulation(*s.simulation, *s.schedule, s.observers, options);
+  CHECK(r.completed);
+  CHECK(r.steps.acoustic >= r.steps.advection);
+}
+
+TEST_CASE("VTP snapshots are well-formed PolyData with one value per point and component", "[run]") {
+  LoadedScene s = scene_from(kChannel);
+  const std::string doc = vtp_document(fluid_snapshot(*s.simulation));
+  const std::size_t n = s.simulation->fluid().particles.size();
+  CHECK(doc.find("<VTKFile type=\"PolyData\"") != std::string::npos);
+  CHECK(doc.find("NumberOfPoints=\"" + std::to_string(n) + "\"") != std::string::npos);
+  // Every DataArray holds points x components numbers.
+  const std::regex array(R"re(<DataArray type="(\w+)"(?: Name="(\w+)")? NumberOfComponents="(\d)" format="ascii">\n([^<]*)</DataArray>)re");
+  int arrays = 0;
+  for (auto it = std::sregex_iterator(doc.begin(), doc.end(), array); it != std::sregex_iterator(); ++it) {
+    const std::size_t components = std::stoul((*it)[3]);
+    std::istringstream values((*it)[4]);
+    std::size_t count = 0;
+    double x;
+    while (values >> x) ++count;
+    CHECK(count == n * components);
+    ++arrays;
+  }
+  CHECK(arrays == 5);  // points, velocity, pressure, density, vorticity
+}

@@ -1,0 +1,126 @@
+#include "kernel/lattice_moments.hpp"
+#include "scene_fixture.hpp"
+#include "solid/solid_dynamics.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <random>
+
+using namespace mrsph;
+
+namespace {
+
+// A free 1 x 1 block at dp = 0.05, one material.
+LoadedScene block(const std::string& model, double nu = 0.3, double h_over_dp = 1.3) {
+  return scene_from(R"({
+    "domain": {"lower": [-2, -2], "upper": [3, 3]},
+    "solids": [{"name": "block", "dp": 0.05, "h_over_dp": )" + std::to_string(h_over_dp) + R"(, "region": {"rectangle": {"lower": [0, 0], "upper": [1, 1]}},
+                "material": {"model": ")" + model + R"(", "density": 1000, "youngs_modulus": 1e6, "poisson_ratio": )" +
+                    std::to_string(nu) + R"(}}],
+    "end_time": 1})");
+}
+
+Mat2 rotation(double angle) {
+  Mat2 R;
+  R << std::cos(angle), -std::sin(angle), std::sin(angle), std::cos(angle);
+  return R;
+}
+
+}  // namespace
+
+TEST_CASE("The correction matrix of an interior lattice particle is the identity (up to the lattice moment)", "[solid]") {
+  // In the continuum B0 = I. On a lattice, sum_b V_b (r_b - r_a) (x) grad W = M2 I with the lattice
+  // moment M2 (0.974 at h = 1.3 dp), so B0 = I / M2 exactly; M2 -> 1 as h/dp grows.
+  for (double h_over_dp : {1.3, 2.5}) {
+    LoadedScene s = block("saint_venant_kirchhoff", 0.3, h_over_dp);
+    const SolidBody& b = s.simulation->solids()[0];
+    const double m2 = lattice_laplacian_moment(b.kernel, b.dp, 0.0);
+    const double reach = b.kernel.cutoff();
+    int interior = 0;
+    for (std::size_t a = 0; a < b.particles.size(); ++a) {
+      const Vec2& p = b.particles.pos0[a];
+      if (p.x() < reach || p.x() > 1 - reach || p.y() < reach || p.y() > 1 - reach) continue;
+      ++interior;
+      REQUIRE((b.particles.B[a] - Mat2::Identity() / m2).norm() < 1e-7);
+      REQUIRE((b.particles.B[a] - Mat2::Identity()).norm() < (h_over_dp > 2 ? 0.005 : 0.04));
+    }
+    CHECK(interior > 10);
+  }
+}
+
+TEST_CASE("A linear velocity field gives the exact deformation rate everywhere, boundary included", "[solid]") {
+  LoadedScene s = block("neo_hookean");
+  SolidBody& b = s.simulation->solids()[0];
+  Mat2 L;
+  L << 0.3, -1.2, 0.7, 0.05;
+  for (std::size_t a = 0; a < b.particles.size(); ++a) b.particles.vel[a] = L * b.particles.pos0[a] + Vec2(2.0, -1.0);
+  compute_deformation_rate(b);
+  // Exact but for the regularisation of the inverse, (M^T M + 1e-8 I)^-1 M^T (METHOD.md section 4).
+  for (std::size_t a = 0; a < b.particles.size(); ++a) REQUIRE((b.particles.dF_dt[a] - L).norm() < 1e-6 * L.norm());
+}
+
+TEST_CASE("A rigid rotation gives zero stress for both materials (objectivity)", "[solid]") {
+  for (const std::string model : {"saint_venant_kirchhoff", "neo_hookean"}) {
+    const ElasticMaterial m(solid_model_from_name(model), 1000, 1e6, 0.45);
+    for (double angle : {0.1, 1.0, 2.5}) {
+      const Mat2 R = rotation(angle);
+      CHECK(m.first_piola_kirchhoff(R).norm() < 1e-6 * m.youngs_modulus() * 1e-6);
+      CHECK(std::abs(m.strain_energy_density(R)) < 1e-9);
+      // Frame indifference of a stressed state: P(R F) = R P(F).
+      Mat2 F;
+      F << 1.1, 0.2, -0.05, 0.93;
+      CHECK((m.first_piola_kirchhoff(R * F) - R * m.first_piola_kirchhoff(F)).norm() <
+            1e-9 * m.first_piola_kirchhoff(F).norm());
+    }
+  }
+}
+
+TEST_CASE("For small strain the two materials give the same stress", "[solid]") {
+  const ElasticMaterial svk(SolidModel::SaintVenantKirchhoff, 1000, 1e6, 0.4);
+  const ElasticMaterial nh(SolidModel::NeoHookean, 1000, 1e6, 0.4);
+  std::mt19937 gen(3);
+  std::normal_distribution<double> u(0.0, 1.0);
+  for (int trial = 0; trial < 20; ++trial) {
+    Mat2 G;
+    G << u(gen), u(gen), u(gen), u(gen);
+    const double eps = 1e-5;
+    const Mat2 F = Mat2::Identity() + eps * G;
+    const Mat2 P_svk = svk.first_piola_kirchhoff(F), P_nh = nh.first_piola_kirchhoff(F);
+    // Both linearise to lambda tr(e) I + 2 G e; they differ at second order, eps^2 relative to eps.
+    CHECK((P_svk - P_nh).norm() < 50 * eps * P_svk.norm());
+  }
+}
+
+TEST_CASE("The second Piola-Kirchhoff stress is the derivative of the strain energy", "[solid]") {
+  for (const SolidModel model : {SolidModel::SaintVenantKirchhoff, SolidModel::NeoHookean}) {
+    const ElasticMaterial m(model, 1000, 1e6, 0.35);
+    Mat2 F;
+    F << 1.15, 0.1, -0.08, 0.9;
+    // dW = P : dF for any variation dF.
+    const Mat2 P = m.first_piola_kirchhoff(F);
+    for (int i = 0; i < 2; ++i)
+      for (int j = 0; j < 2; ++j) {
+        Mat2 dF = Mat2::Zero();
+        dF(i, j) = 1e-6;
+        const double fd = (m.strain_energy_density(F + dF) - m.strain_energy_density(F - dF)) / 2e-6;
+        CHECK(fd == Approx(P(i, j)).epsilon(1e-6));
+      }
+  }
+}
+
+TEST_CASE("Internal forces of a deformed body sum to zero (momentum is conserved)", "[solid]") {
+  LoadedScene s = block("neo_hookean", 0.45);
+  SolidBody& b = s.simulation->solids()[0];
+  std::mt19937 gen(9);
+  std::normal_distribution<double> u(0.0, 0.05);
+  for (auto& F : b.particles.F) F = Mat2::Identity() + Mat2{{u(gen), u(gen)}, {u(gen), u(gen)}};
+  compute_stress(b);
+  Vec2 total = Vec2::Zero();
+  double scale = 0.0;
+  for (std::size_t a = 0; a < b.particles.size(); ++a) {
+    const Vec2 f = internal_force(b, a);
+    total += f;
+    scale += f.norm();
+  }
+  CHECK(total.norm() < 1e-12 * scale);
+}
