@@ -6,18 +6,31 @@
 
 namespace mrsph {
 
-void acoustic_first_half(FluidBody& fluid, const NeighborList& inner, std::vector<FluidContact>& contacts, Real dt,
-                         const Vec2& body_acceleration) {
+void advance_density_and_position(FluidBody& fluid, Real dt_density, Real dt_position) {
   FluidParticles& f = fluid.particles;
   const EquationOfState& eos = fluid.material.eos;
-  const RiemannDissipation& riemann = fluid.riemann;
-
   parallel_for_each(f.size(), [&](std::size_t i) {
-    f.rho[i] += 0.5 * dt * f.drho_dt[i];
+    f.rho[i] += dt_density * f.drho_dt[i];
     f.p[i] = eos.pressure(f.rho[i]);
     f.vol[i] = f.mass[i] / f.rho[i];
-    f.pos[i] += 0.5 * dt * f.vel[i];
+    f.pos[i] += dt_position * f.vel[i];
   });
+}
+
+void advance_position(FluidBody& fluid, Real dt) {
+  FluidParticles& f = fluid.particles;
+  parallel_for_each(f.size(), [&](std::size_t i) { f.pos[i] += dt * f.vel[i]; });
+}
+
+void advance_density(FluidBody& fluid, Real dt) {
+  FluidParticles& f = fluid.particles;
+  parallel_for_each(f.size(), [&](std::size_t i) { f.rho[i] += dt * f.drho_dt[i]; });
+}
+
+void compute_pressure_interaction(FluidBody& fluid, const NeighborList& inner, std::vector<FluidContact>& contacts,
+                                  const Vec2& body_acceleration) {
+  FluidParticles& f = fluid.particles;
+  const RiemannDissipation& riemann = fluid.riemann;
   for (FluidContact& c : contacts) c.pair_pressure_force.resize(c.pairs.pair_count());
 
   parallel_for_each(f.size(), [&](std::size_t i) {
@@ -46,15 +59,20 @@ void acoustic_first_half(FluidBody& fluid, const NeighborList& inner, std::vecto
     }
     f.pressure_force[i] = force;
     f.drho_dt[i] = rho_i * drho;
-    f.vel[i] += dt * ((force + f.dissipation_force[i] + f.force_prior[i]) / f.mass[i] + body_acceleration);
   });
 }
 
-void acoustic_second_half(FluidBody& fluid, const NeighborList& inner, std::vector<FluidContact>& contacts, Real dt) {
+void kick(FluidBody& fluid, Real dt, const Vec2& body_acceleration) {
+  FluidParticles& f = fluid.particles;
+  parallel_for_each(f.size(), [&](std::size_t i) {
+    f.vel[i] += dt * ((f.pressure_force[i] + f.dissipation_force[i] + f.force_prior[i]) / f.mass[i] + body_acceleration);
+  });
+}
+
+void add_velocity_divergence_and_dissipation(FluidBody& fluid, const NeighborList& inner,
+                                             std::vector<FluidContact>& contacts) {
   FluidParticles& f = fluid.particles;
   const RiemannDissipation& riemann = fluid.riemann;
-
-  parallel_for_each(f.size(), [&](std::size_t i) { f.pos[i] += 0.5 * dt * f.vel[i]; });
   for (FluidContact& c : contacts)
     c.pair_dissipation_force.assign(riemann.momentum ? c.pairs.pair_count() : 0, Vec2::Zero());
 
@@ -88,7 +106,6 @@ void acoustic_second_half(FluidBody& fluid, const NeighborList& inner, std::vect
       }
     }
     f.drho_dt[i] += f.rho[i] * divergence;
-    f.rho[i] += 0.5 * dt * f.drho_dt[i];
     f.dissipation_force[i] = dissipation;
   });
 
@@ -96,6 +113,19 @@ void acoustic_second_half(FluidBody& fluid, const NeighborList& inner, std::vect
     c.boundary_dissipation_reaction.assign(c.pairs_of_boundary.size(), Vec2::Zero());
     if (riemann.momentum) accumulate_boundary_reaction(c, c.pair_dissipation_force, c.boundary_dissipation_reaction);
   }
+}
+
+void acoustic_first_half(FluidBody& fluid, const NeighborList& inner, std::vector<FluidContact>& contacts, Real dt,
+                         const Vec2& body_acceleration) {
+  advance_density_and_position(fluid, 0.5 * dt, 0.5 * dt);
+  compute_pressure_interaction(fluid, inner, contacts, body_acceleration);
+  kick(fluid, dt, body_acceleration);
+}
+
+void acoustic_second_half(FluidBody& fluid, const NeighborList& inner, std::vector<FluidContact>& contacts, Real dt) {
+  advance_position(fluid, 0.5 * dt);
+  add_velocity_divergence_and_dissipation(fluid, inner, contacts);
+  advance_density(fluid, 0.5 * dt);
 }
 
 void accumulate_boundary_reaction(const FluidContact& contact, const Vec2Array& pair_force, Vec2Array& reaction) {

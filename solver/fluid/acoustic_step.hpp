@@ -14,6 +14,9 @@
 //              rho^{n+1} = rho^{n+1/2} + dt/2 drho/dt
 // f^d is applied in the next acoustic step, to the fluid and (with the opposite sign) to the
 // boundary, so each pair exchanges exactly opposite impulses.
+//
+// The halves are composed of the operators below, which the velocity-based Verlet schedule
+// composes differently.
 #pragma once
 
 #include "fluid/fluid_body.hpp"
@@ -23,6 +26,21 @@ namespace mrsph {
 void acoustic_first_half(FluidBody& fluid, const NeighborList& inner, std::vector<FluidContact>& contacts, Real dt,
                          const Vec2& body_acceleration);
 void acoustic_second_half(FluidBody& fluid, const NeighborList& inner, std::vector<FluidContact>& contacts, Real dt);
+
+// rho += dt_density drho/dt; p = EoS(rho); V = m / rho; r += dt_position v.
+void advance_density_and_position(FluidBody& fluid, Real dt_density, Real dt_position);
+// r += dt v.
+void advance_position(FluidBody& fluid, Real dt);
+// f^p (with every boundary pair force stored) and drho/dt = the Riemann pressure-difference term.
+void compute_pressure_interaction(FluidBody& fluid, const NeighborList& inner, std::vector<FluidContact>& contacts,
+                                  const Vec2& body_acceleration);
+// v += dt ((f^p + f^d + F^prior) / m + g).
+void kick(FluidBody& fluid, Real dt, const Vec2& body_acceleration);
+// drho/dt += rho div v terms; f^d (and its boundary reactions) from the current velocities.
+void add_velocity_divergence_and_dissipation(FluidBody& fluid, const NeighborList& inner,
+                                             std::vector<FluidContact>& contacts);
+// rho += dt drho/dt (volumes are refreshed when the pressure is next evaluated).
+void advance_density(FluidBody& fluid, Real dt);
 
 // Sum over the pairs of each boundary particle of -pair_force: the reaction of the fluid on the
 // boundary, exactly opposite to what the fluid received (pair by pair).

@@ -11,7 +11,7 @@ Real advection_time_step(const FluidBody& fluid, const Vec2& body_acceleration) 
   const FluidParticles& f = fluid.particles;
   const Real h = fluid.h();
   const Real speed2 = parallel_max(f.size(), [&](std::size_t i) {
-    const Vec2 acc = (f.dissipation_force[i] + f.force_prior[i]) / f.mass[i] + body_acceleration;
+    const Vec2 acc = f.dissipation_force[i] / f.mass[i] + body_acceleration;
     return std::max(f.vel[i].squaredNorm(), 4.0 * h * acc.norm());
   }, 0.0);
   const Real nu = fluid.material.viscosity / fluid.material.rho0();

@@ -1,7 +1,9 @@
 // Dual-criteria time stepping of the fluid (Zhang, Rezavand & Hu 2020; paper Eqs. 32-33, with the
 // terms of the paper's code, METHOD.md section 2):
 //   advection:  Dt = 0.25 h / max( sqrt(max_i max(|v_i|^2, 4 h |a_i|)), U_ref, nu / h )
-//               with a_i = (f^d_i + F^prior_i)/m_i + g and nu = mu / rho0 (the h^2/nu viscous limit);
+//               with a_i = f^d_i/m_i + g and nu = mu / rho0 (the h^2/nu viscous limit). The viscous
+//               force is not in a_i: its limit is the h^2/nu term, and the paper's code resets
+//               F^prior to the body force before evaluating Dt (METHOD.md section 6);
 //   acoustic:   dt = 0.6 h / max_i (c + |v_i|).
 #pragma once
 

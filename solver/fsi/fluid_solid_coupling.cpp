@@ -25,7 +25,10 @@ Vec2 total_force_on_boundary(const FluidContact& contact) {
 }
 
 void begin_kinematics_average(SolidParticles& solid) {
-  parallel_for_each(solid.size(), [&](std::size_t a) { solid.pos_acoustic_start[a] = solid.pos[a]; });
+  parallel_for_each(solid.size(), [&](std::size_t a) {
+    solid.pos_acoustic_start[a] = solid.pos[a];
+    solid.vel_acoustic_start[a] = solid.vel[a];
+  });
 }
 
 void end_kinematics_average(SolidParticles& solid, Real dt, SolidKinematics mode) {
@@ -36,7 +39,8 @@ void end_kinematics_average(SolidParticles& solid, Real dt, SolidKinematics mode
       return;
     }
     const Vec2 v_new = (solid.pos[a] - solid.pos_acoustic_start[a]) / dt;
-    solid.acc_ave[a] = (v_new - solid.vel_ave[a]) / dt;
+    solid.acc_ave[a] = mode == SolidKinematics::Averaged ? Vec2((solid.vel[a] - solid.vel_acoustic_start[a]) / dt)
+                                                         : Vec2((v_new - solid.vel_ave[a]) / dt);
     solid.vel_ave[a] = v_new;
   });
 }

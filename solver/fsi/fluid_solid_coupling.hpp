@@ -6,8 +6,8 @@
 //    applies in the same acoustic step. Their sum is the solid's F^prior, held constant over the
 //    solid sub-steps of the acoustic step.
 //  - Kinematics the fluid sees (Eq. 35): the solid velocity and acceleration averaged over the
-//    acoustic step, vbar = (r^{n+1} - r^n) / dt and abar = (vbar^{n+1} - vbar^n) / dt; or, for
-//    comparison, the instantaneous velocity and acceleration of the last sub-step.
+//    acoustic step (simulation.hpp, SolidKinematics), or, for comparison, the code's second
+//    difference or the instantaneous values of the last sub-step.
 #pragma once
 
 #include "fluid/fluid_body.hpp"

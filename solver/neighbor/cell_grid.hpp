@@ -22,10 +22,11 @@ class CellGrid {
   const DomainBox& box() const { return box_; }
   Real search_radius() const { return search_radius_; }
 
-  // Calls f(j, image) for every particle j whose cell neighbours the cell of `query` (a wrapped
-  // position); `image` is the periodic shift to add to wrapped_position(j).
+  // Calls f(begin, end, image) for each cell neighbouring the cell of `query` (a wrapped position):
+  // the particles of that cell are sorted_index(k) and sorted_position(k) for k in [begin, end), and
+  // `image` is the periodic shift to add to their positions.
   template <class F>
-  void for_each_candidate(const Vec2& query, F&& f) const {
+  void for_each_cell_near(const Vec2& query, F&& f) const {
     std::array<int, 2> c;
     for (int a = 0; a < 2; ++a) c[a] = cell_coordinate(query[a], a);
     for (int dy = -1; dy <= 1; ++dy) {
@@ -36,12 +37,13 @@ class CellGrid {
         int cx = c[0] + dx;
         Real shift_x = 0.0;
         if (!wrap_cell(cx, 0, shift_x)) continue;
-        const Vec2 image(shift_x, shift_y);
         const int cell = cy * cells_[0] + cx;
-        for (Index k = cell_start_[cell]; k < cell_start_[cell + 1]; ++k) f(sorted_[k], image);
+        if (cell_start_[cell] != cell_start_[cell + 1]) f(cell_start_[cell], cell_start_[cell + 1], Vec2(shift_x, shift_y));
       }
     }
   }
+  Index sorted_index(Index k) const { return sorted_[k]; }
+  const Vec2& sorted_position(Index k) const { return sorted_pos_[k]; }
 
  private:
   int cell_coordinate(Real x, int axis) const;
@@ -55,6 +57,7 @@ class CellGrid {
   Vec2Array wrapped_;
   std::vector<Index> cell_start_;
   std::vector<Index> sorted_;
+  Vec2Array sorted_pos_;  // wrapped positions in cell order, contiguous per cell
 };
 
 }  // namespace mrsph

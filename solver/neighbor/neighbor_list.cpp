@@ -10,40 +10,46 @@ namespace mrsph {
 void NeighborList::build(const Vec2Array& queries, const CellGrid& target, const WendlandC2& kernel,
                          bool exclude_self) {
   const std::size_t n = queries.size();
-  const Real cutoff = kernel.cutoff();
-  const Real cutoff2 = cutoff * cutoff;
+  const Real cutoff2 = kernel.cutoff() * kernel.cutoff();
   const DomainBox& box = target.box();
 
   // Fixed chunks, each filled by one task, then concatenated in order: one search pass and a
-  // result independent of the thread count.
-  constexpr std::size_t kChunk = 512;
+  // result independent of the thread count. The order of a particle's neighbours follows the cell
+  // layout of the target, which depends only on the positions.
+  constexpr std::size_t kChunk = 256;
   const std::size_t chunks = (n + kChunk - 1) / kChunk;
-  std::vector<std::vector<Neighbor>> chunk_entries(chunks);
+  if (chunk_entries_.size() < chunks) chunk_entries_.resize(chunks);
   std::vector<Index> counts(n, 0);
 
   tbb::parallel_for(std::size_t(0), chunks, [&](std::size_t c) {
-    auto& out = chunk_entries[c];
+    std::vector<Neighbor>& out = chunk_entries_[c];
     out.clear();
     const std::size_t begin = c * kChunk, end = std::min(n, begin + kChunk);
     for (std::size_t i = begin; i < end; ++i) {
       const Vec2 xi = box.wrap(queries[i]);
       const std::size_t before = out.size();
-      target.for_each_candidate(xi, [&](Index j, const Vec2& image) {
-        // (xi - xj) - image is exactly antisymmetric in floating point: pair forces cancel to the bit.
-        const Vec2 d = (xi - target.wrapped_position(j)) - image;
-        const Real r2 = d.squaredNorm();
-        if (r2 >= cutoff2) return;
-        if (exclude_self && static_cast<std::size_t>(j) == i && image.isZero()) return;
-        const Real r = std::sqrt(r2);
+      // Pass 1: a tight distance filter that only records the accepted pairs.
+      target.for_each_cell_near(xi, [&](Index k_begin, Index k_end, const Vec2& image) {
+        for (Index k = k_begin; k < k_end; ++k) {
+          // (xi - xj) - image is exactly antisymmetric in floating point: pair forces cancel to the bit.
+          const Vec2 d = (xi - target.sorted_position(k)) - image;
+          const Real r2 = d.squaredNorm();
+          if (r2 >= cutoff2) continue;
+          const Index j = target.sorted_index(k);
+          if (exclude_self && static_cast<std::size_t>(j) == i && image.isZero()) continue;
+          out.push_back(Neighbor{j, r2, 0.0, 0.0, d});
+        }
+      });
+      // Pass 2: kernel values of the accepted pairs.
+      for (std::size_t m = before; m < out.size(); ++m) {
+        Neighbor& nb = out[m];
+        const Real r = std::sqrt(nb.r);
+        nb.r = r;
+        nb.W = kernel.W(r);
+        nb.dW = kernel.dW(r);
         // Coincident particles of different bodies: no direction; W counts, dW is zero at r = 0.
-        const Vec2 e = r > 0.0 ? Vec2(d / r) : Vec2::Zero();
-        out.push_back(Neighbor{j, r, kernel.W(r), kernel.dW(r), e});
-      });
-      // Order each particle's neighbours by index so the summation order (and the round-off) is
-      // independent of the cell layout of the target.
-      std::sort(out.begin() + before, out.end(), [](const Neighbor& a, const Neighbor& b) {
-        return a.j != b.j ? a.j < b.j : a.e[0] < b.e[0];
-      });
+        nb.e = r > 0.0 ? Vec2(nb.e / r) : Vec2::Zero();
+      }
       counts[i] = static_cast<Index>(out.size() - before);
     }
   });
@@ -52,7 +58,7 @@ void NeighborList::build(const Vec2Array& queries, const CellGrid& target, const
   for (std::size_t i = 0; i < n; ++i) offsets_[i + 1] = offsets_[i] + counts[i];
   entries_.resize(offsets_[n]);
   tbb::parallel_for(std::size_t(0), chunks, [&](std::size_t c) {
-    std::copy(chunk_entries[c].begin(), chunk_entries[c].end(), entries_.begin() + offsets_[c * kChunk]);
+    std::copy(chunk_entries_[c].begin(), chunk_entries_[c].end(), entries_.begin() + offsets_[c * kChunk]);
   });
 }
 

@@ -40,6 +40,7 @@ class NeighborList {
  private:
   std::vector<Index> offsets_;
   std::vector<Neighbor> entries_;
+  std::vector<std::vector<Neighbor>> chunk_entries_;  // reused between builds: no reallocation
 };
 
 // For a contact list query -> target, the entries of each target particle: target particle a owns

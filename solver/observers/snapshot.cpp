@@ -75,6 +75,9 @@ PointCloud solid_snapshot(const SolidBody& solid) {
   cloud.add_scalar("von_mises", von_mises);
   cloud.add_scalar("constrained", constrained);
   cloud.add_vector("normal", s.normal);
+  cloud.add_vector("velocity_seen_by_fluid", s.vel_ave);
+  cloud.add_vector("acceleration_seen_by_fluid", s.acc_ave);
+  cloud.add_vector("force_from_fluid", s.force_prior);
   return cloud;
 }
 

@@ -192,6 +192,9 @@ SolidBody read_solid(const SceneNode& node, const DomainBox& box, double& budget
   mat.finish();
   SolidBody solid(name, dp, h_over_dp, ElasticMaterial(solid_model_from_name(model_name), rho, E, nu));
   solid.options.cfl = node.positive_or("cfl", solid.options.cfl);
+  solid.options.damping_coefficient = node.non_negative_or("damping", solid.options.damping_coefficient);
+  solid.options.gradient_correction =
+      gradient_correction_from_name(node.choice_or("gradient_correction", {"first_order", "second_order"}, "second_order"));
   ShapePtr clamp;
   if (node.has("clamp")) clamp = read_region(node, "clamp");
   const InitialVelocity velocity = read_initial_velocity(node);
@@ -319,10 +322,13 @@ LoadedScene build_scene(const Json& document, const std::string& file, const Sce
 
   std::string schedule_name = "multi_step_position_verlet";
   if (const auto node = root.optional_child("schedule")) {
-    schedule_name = node->choice_or("type", {"multi_step_position_verlet", "single_step_position_verlet"}, schedule_name);
-    sim->solid_kinematics = node->choice_or("solid_kinematics", {"averaged", "instantaneous"}, "averaged") == "instantaneous"
-                                ? SolidKinematics::Instantaneous
-                                : SolidKinematics::Averaged;
+    schedule_name = node->choice_or(
+        "type", {"multi_step_position_verlet", "single_step_position_verlet", "multi_step_velocity_verlet"}, schedule_name);
+    const std::string kinematics = node->choice_or(
+        "solid_kinematics", {"averaged", "averaged_second_difference", "instantaneous"}, "averaged");
+    sim->solid_kinematics = kinematics == "instantaneous"                ? SolidKinematics::Instantaneous
+                            : kinematics == "averaged_second_difference" ? SolidKinematics::AveragedSecondDifference
+                                                                         : SolidKinematics::Averaged;
     node->finish();
   }
   scene.schedule = make_schedule(schedule_name);

@@ -23,8 +23,13 @@ struct StepCounters {
   long long solid = 0;  // solid sub-steps, summed over solid bodies
 };
 
-// How the fluid sees an elastic solid within an acoustic step (paper Eq. 35 and section 3.2).
-enum class SolidKinematics { Averaged, Instantaneous };
+// How the fluid sees an elastic solid within an acoustic step (paper Eq. 35 and section 3.2):
+//   Averaged                  time averages over the acoustic step [t, t + dt]:
+//                             vbar = (r(t + dt) - r(t)) / dt,  abar = (v(t + dt) - v(t)) / dt
+//   AveragedSecondDifference  the paper's code: the same vbar, abar = (vbar^{n+1} - vbar^n) / dt,
+//                             a second difference of positions over two acoustic steps
+//   Instantaneous             velocity and acceleration of the last solid sub-step
+enum class SolidKinematics { Averaged, AveragedSecondDifference, Instantaneous };
 
 struct DivergenceLimits {
   Real speed_factor = 3.0;  // |v| above this multiple of the body's sound speed is a runaway

@@ -7,6 +7,7 @@
 #include "particles/boundary_view.hpp"
 #include "particles/solid_particles.hpp"
 #include "solid/elastic_material.hpp"
+#include "solid/gradient_weights.hpp"
 
 #include <string>
 
@@ -14,6 +15,14 @@ namespace mrsph {
 
 struct SolidOptions {
   Real cfl = 0.6;  // paper Eq. 34
+  // Optional Kelvin-Voigt damping (off by default; not in the paper): a viscous second
+  // Piola-Kirchhoff stress S_v = eta dE/dt with eta = coefficient * rho0 c_S h. Its damping ratio
+  // grows with frequency, ~ eta omega / (2 E): it removes particle-scale noise (omega ~ c_S / h)
+  // and barely touches structural modes. The 2020 version of the paper's code used 0.5.
+  Real damping_coefficient = 0.0;
+  // Gradient weights (gradient_weights.hpp): the paper's B0 (first order) or exact for quadratic
+  // fields (second order, the default: bending of thin bodies).
+  GradientCorrection gradient_correction = GradientCorrection::SecondOrder;
 };
 
 struct SolidBody {
@@ -24,6 +33,7 @@ struct SolidBody {
   SolidOptions options;
   SolidParticles particles;
   NeighborList inner;  // reference configuration
+  GradientWeights weights;  // per pair of `inner`, built once
 
   SolidBody(std::string body_name, Real spacing, Real h_over_dp, ElasticMaterial elastic)
       : name(std::move(body_name)), dp(spacing), kernel(h_over_dp * spacing), material(std::move(elastic)) {}

@@ -11,16 +11,13 @@ namespace mrsph {
 
 namespace {
 
-// (M^T M + eps I)^-1 M^T: the inverse for a well-conditioned M, bounded for a degenerate one
-// (a particle with too few neighbours), as the paper's code does.
-Mat2 regularised_inverse(const Mat2& M) {
-  return (M.transpose() * M + 1e-8 * Mat2::Identity()).inverse() * M.transpose();
-}
-
-Mat2 velocity_gradient_sum(const SolidParticles& s, const NeighborList& inner, std::size_t a) {
-  Mat2 sum = Mat2::Zero();
-  for (const Neighbor& n : inner.of(a)) sum += (s.vol0[n.j] * n.dW) * (s.vel[n.j] - s.vel[a]) * n.e.transpose();
-  return sum;
+Mat2 deformation_rate(const SolidBody& solid, std::size_t a) {
+  const SolidParticles& s = solid.particles;
+  const auto list = solid.inner.of(a);
+  const Index first = solid.inner.offset(a);
+  Mat2 rate = Mat2::Zero();
+  for (std::size_t k = 0; k < list.size(); ++k) rate += (s.vel[list[k].j] - s.vel[a]) * solid.weights.w[first + k].transpose();
+  return rate;
 }
 
 }  // namespace
@@ -32,14 +29,24 @@ void initialise_solid(SolidBody& solid) {
   grid.build(s.pos0);
   solid.inner.build(s.pos0, grid, solid.kernel, /*exclude_self=*/true);
 
+  solid.weights = compute_gradient_weights(solid.inner, s.vol0, solid.h(), solid.options.gradient_correction);
+  if (solid.options.gradient_correction != GradientCorrection::FirstOrder) {
+    // Keep the paper's stability margin: scale the step by omega_max(B0) / omega_max(used).
+    const GradientWeights paper = compute_gradient_weights(solid.inner, s.vol0, solid.h(), GradientCorrection::FirstOrder);
+    const ElasticMaterial& m = solid.material;
+    const Real omega2_paper = highest_frequency_squared(solid.inner, paper.w, paper.w_reverse, paper.w_sum, s.vol0, s.mass,
+                                                        s.constrained, m.lambda(), m.shear_modulus());
+    const Real omega2_used = highest_frequency_squared(solid.inner, solid.weights.w, solid.weights.w_reverse,
+                                                       solid.weights.w_sum, s.vol0, s.mass, s.constrained, m.lambda(),
+                                                       m.shear_modulus());
+    if (omega2_used > omega2_paper && omega2_paper > 0.0) solid.weights.time_step_scale = std::sqrt(omega2_paper / omega2_used);
+  }
   parallel_for_each(s.size(), [&](std::size_t a) {
-    Mat2 M = Mat2::Zero();
-    for (const Neighbor& n : solid.inner.of(a)) M += (s.vol0[n.j] * n.dW) * (-n.r * n.e) * n.e.transpose();
-    s.B[a] = regularised_inverse(M);
+    s.B[a] = solid.weights.B[a];
     s.F[a] = Mat2::Identity();
     s.dF_dt[a] = Mat2::Zero();
     s.rho[a] = solid.material.density();
-    s.stress_PBt[a] = Mat2::Zero();
+    s.stress[a] = Mat2::Zero();
   });
   s.normal0 = normals_from_kernel_gradient(s.vol0, solid.inner);
   s.normal = s.normal0;
@@ -54,38 +61,57 @@ Real solid_time_step(const SolidBody& solid) {
     if (s.constrained[a]) return 0.0;
     return std::max(std::sqrt(s.acc[a].norm() / h), (c + s.vel[a].norm()) / h);
   }, c / h);
-  return solid.options.cfl / rate;
+  return solid.options.cfl * solid.weights.time_step_scale / rate;
 }
 
 void compute_deformation_rate(SolidBody& solid) {
   SolidParticles& s = solid.particles;
-  parallel_for_each(s.size(), [&](std::size_t a) { s.dF_dt[a] = velocity_gradient_sum(s, solid.inner, a) * s.B[a]; });
+  parallel_for_each(s.size(), [&](std::size_t a) { s.dF_dt[a] = deformation_rate(solid, a); });
 }
+
+namespace {
+// First Piola-Kirchhoff stress, elastic plus the optional Kelvin-Voigt part F eta dE/dt.
+Mat2 total_stress(const SolidBody& solid, const Mat2& F, const Mat2& dF_dt, Real eta) {
+  Mat2 P = solid.material.first_piola_kirchhoff(F);
+  if (eta > 0.0) {
+    const Mat2 rate = F.transpose() * dF_dt;
+    P += F * (eta * 0.5 * (rate + rate.transpose()));
+  }
+  return P;
+}
+Real damping_viscosity(const SolidBody& solid) {
+  return solid.options.damping_coefficient * solid.material.density() * solid.material.sound_speed() * solid.h();
+}
+}  // namespace
 
 void compute_stress(SolidBody& solid) {
   SolidParticles& s = solid.particles;
+  const Real eta = damping_viscosity(solid);
   parallel_for_each(s.size(), [&](std::size_t a) {
     s.rho[a] = solid.material.density() / s.F[a].determinant();
-    s.stress_PBt[a] = solid.material.first_piola_kirchhoff(s.F[a]) * s.B[a].transpose();
+    s.stress[a] = total_stress(solid, s.F[a], s.dF_dt[a], eta);
   });
 }
 
 Vec2 internal_force(const SolidBody& solid, std::size_t a) {
   const SolidParticles& s = solid.particles;
-  Vec2 force = Vec2::Zero();
-  for (const Neighbor& n : solid.inner.of(a)) force += (s.vol0[n.j] * n.dW) * ((s.stress_PBt[a] + s.stress_PBt[n.j]) * n.e);
-  return s.vol0[a] * force;
+  const auto list = solid.inner.of(a);
+  const Index first = solid.inner.offset(a);
+  Vec2 force = s.vol0[a] * (s.stress[a] * solid.weights.w_sum[a]);
+  for (std::size_t k = 0; k < list.size(); ++k) force -= s.vol0[list[k].j] * (s.stress[list[k].j] * solid.weights.w_reverse[first + k]);
+  return force;
 }
 
 void solid_substep(SolidBody& solid, Real dt, const Vec2& body_acceleration) {
   SolidParticles& s = solid.particles;
   const ElasticMaterial& material = solid.material;
+  const Real eta = damping_viscosity(solid);
 
   parallel_for_each(s.size(), [&](std::size_t a) {
     if (!s.constrained[a]) s.pos[a] += 0.5 * dt * s.vel[a];
     s.F[a] += 0.5 * dt * s.dF_dt[a];
     s.rho[a] = material.density() / s.F[a].determinant();
-    s.stress_PBt[a] = material.first_piola_kirchhoff(s.F[a]) * s.B[a].transpose();
+    s.stress[a] = total_stress(solid, s.F[a], s.dF_dt[a], eta);
   });
   parallel_for_each(s.size(), [&](std::size_t a) {
     if (s.constrained[a]) {
@@ -99,8 +125,30 @@ void solid_substep(SolidBody& solid, Real dt, const Vec2& body_acceleration) {
     s.pos[a] += 0.5 * dt * s.vel[a];
   });
   parallel_for_each(s.size(), [&](std::size_t a) {
-    s.dF_dt[a] = velocity_gradient_sum(s, solid.inner, a) * s.B[a];
+    s.dF_dt[a] = deformation_rate(solid, a);
     s.F[a] += 0.5 * dt * s.dF_dt[a];
+  });
+}
+
+void solid_substep_velocity_verlet(SolidBody& solid, Real dt, const Vec2& body_acceleration) {
+  SolidParticles& s = solid.particles;
+  parallel_for_each(s.size(), [&](std::size_t a) {
+    if (s.constrained[a]) return;
+    s.vel[a] += 0.5 * dt * s.acc[a];
+    s.pos[a] += dt * s.vel[a];
+  });
+  compute_deformation_rate(solid);
+  parallel_for_each(s.size(), [&](std::size_t a) { s.F[a] += dt * s.dF_dt[a]; });
+  compute_stress(solid);
+  parallel_for_each(s.size(), [&](std::size_t a) {
+    if (s.constrained[a]) {
+      s.vel[a].setZero();
+      s.acc[a].setZero();
+      s.pos[a] = s.pos0[a];
+      return;
+    }
+    s.acc[a] = (internal_force(solid, a) + s.force_prior[a]) / s.mass[a] + body_acceleration;
+    s.vel[a] += 0.5 * dt * s.acc[a];
   });
 }
 

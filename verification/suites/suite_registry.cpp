@@ -1,4 +1,5 @@
 #include "suites/suite.hpp"
+#include "suites/momentum_suite.hpp"
 #include "suites/oscillating_plate_suite.hpp"
 #include "suites/womersley_suite.hpp"
 
@@ -10,6 +11,8 @@ const std::vector<SuiteEntry>& registered_suites() {
        run_womersley_suite},
       {"oscillating-plate", "cantilever plate in its first bending mode vs Euler-Bernoulli; convergence, energy, nu = 0.49",
        run_oscillating_plate_suite},
+      {"momentum", "closed FSI box: total momentum for position- and velocity-based Verlet, multi- and single-step",
+       run_momentum_suite},
   };
   return suites;
 }

@@ -1,0 +1,137 @@
+#include "solid/gradient_weights.hpp"
+
+#include "core/parallel.hpp"
+
+#include <Eigen/Dense>
+
+#include <stdexcept>
+
+namespace mrsph {
+
+GradientCorrection gradient_correction_from_name(const std::string& name) {
+  if (name == "first_order") return GradientCorrection::FirstOrder;
+  if (name == "second_order") return GradientCorrection::SecondOrder;
+  throw std::invalid_argument("unknown gradient correction '" + name + "', expected \"first_order\" or \"second_order\"");
+}
+
+namespace {
+
+using Vec5 = Eigen::Matrix<Real, 5, 1>;
+using Mat5 = Eigen::Matrix<Real, 5, 5>;
+
+// (M^T M + eps I)^-1 M^T, as the paper's code inverts B.
+Mat2 regularised_inverse(const Mat2& M) { return (M.transpose() * M + 1e-8 * Mat2::Identity()).inverse() * M.transpose(); }
+
+}  // namespace
+
+GradientWeights compute_gradient_weights(const NeighborList& reference, const RealArray& vol0, Real h,
+                                         GradientCorrection correction) {
+  const std::size_t n = reference.size();
+  GradientWeights g;
+  g.w.assign(reference.pair_count(), Vec2::Zero());
+  g.w_reverse.assign(reference.pair_count(), Vec2::Zero());
+  g.w_sum.assign(n, Vec2::Zero());
+  g.B.assign(n, Mat2::Identity());
+  std::vector<std::uint8_t> second(n, 0);
+
+  parallel_for_each(n, [&](std::size_t a) {
+    const auto list = reference.of(a);
+    const Index first = reference.offset(a);
+    // Linear (the paper's B0): M = sum_b phi_ab d d^T, d = r0_b - r0_a = -r e.
+    Mat2 M = Mat2::Zero();
+    for (const Neighbor& nb : list) {
+      const Real phi = vol0[nb.j] * (-nb.dW) / nb.r;
+      const Vec2 d = -nb.r * nb.e;
+      M += phi * d * d.transpose();
+    }
+    g.B[a] = regularised_inverse(M);
+    for (std::size_t k = 0; k < list.size(); ++k) {
+      const Neighbor& nb = list[k];
+      g.w[first + k] = (vol0[nb.j] * (-nb.dW) / nb.r) * (g.B[a] * (-nb.r * nb.e));
+    }
+    if (correction != GradientCorrection::SecondOrder) return;
+
+    // Quadratic basis, lengths scaled by h so the moment matrix is well-conditioned.
+    Mat5 M5 = Mat5::Zero();
+    for (const Neighbor& nb : list) {
+      const Real phi = vol0[nb.j] * (-nb.dW) / nb.r;
+      const Vec2 d = -nb.r * nb.e / h;
+      Vec5 p;
+      p << d.x(), d.y(), 0.5 * d.x() * d.x(), d.x() * d.y(), 0.5 * d.y() * d.y();
+      M5 += phi * p * p.transpose();
+    }
+    const Eigen::FullPivLU<Mat5> lu(M5);
+    // A particle whose neighbours do not determine a quadratic keeps the linear weights.
+    if (!lu.isInvertible() || lu.rcond() < 1e-6) return;
+    const Mat5 inverse = lu.inverse();
+    for (std::size_t k = 0; k < list.size(); ++k) {
+      const Neighbor& nb = list[k];
+      const Real phi = vol0[nb.j] * (-nb.dW) / nb.r;
+      const Vec2 d = -nb.r * nb.e / h;
+      Vec5 p;
+      p << d.x(), d.y(), 0.5 * d.x() * d.x(), d.x() * d.y(), 0.5 * d.y() * d.y();
+      const Vec5 c = inverse * p;
+      g.w[first + k] = (phi / h) * Vec2(c(0), c(1));
+    }
+    second[a] = 1;
+  });
+
+  // Reverse weights: entry (a, b) gets w_ba from b's list (the reference list is symmetric).
+  parallel_for_each(n, [&](std::size_t a) {
+    const auto list = reference.of(a);
+    const Index first = reference.offset(a);
+    Vec2 sum = Vec2::Zero();
+    for (std::size_t k = 0; k < list.size(); ++k) {
+      sum += g.w[first + k];
+      const Index b = list[k].j;
+      const auto back = reference.of(b);
+      for (std::size_t m = 0; m < back.size(); ++m)
+        if (static_cast<std::size_t>(back[m].j) == a) {
+          g.w_reverse[first + k] = g.w[reference.offset(b) + m];
+          break;
+        }
+    }
+    g.w_sum[a] = sum;
+  });
+  for (auto s : second) g.second_order_count += s;
+  return g;
+}
+
+Real highest_frequency_squared(const NeighborList& reference, const Vec2Array& w, const Vec2Array& w_reverse,
+                               const Vec2Array& w_sum, const RealArray& vol0, const RealArray& mass,
+                               const std::vector<std::uint8_t>& constrained, Real lambda, Real shear_modulus) {
+  const std::size_t n = reference.size();
+  Vec2Array u(n), f(n);
+  Mat2Array stress(n);
+  // A deterministic, non-smooth start excites every mode.
+  for (std::size_t a = 0; a < n; ++a)
+    u[a] = constrained[a] ? Vec2::Zero() : Vec2(std::sin(12.9898 * a + 1.0), std::cos(78.233 * a + 2.0));
+  Real estimate = 0.0;
+  for (int iteration = 0; iteration < 200; ++iteration) {
+    parallel_for_each(n, [&](std::size_t a) {
+      Mat2 grad = Mat2::Zero();
+      const Index first = reference.offset(a);
+      const auto list = reference.of(a);
+      for (std::size_t k = 0; k < list.size(); ++k) grad += (u[list[k].j] - u[a]) * w[first + k].transpose();
+      const Mat2 strain = 0.5 * (grad + grad.transpose());
+      stress[a] = lambda * strain.trace() * Mat2::Identity() + 2.0 * shear_modulus * strain;
+    });
+    parallel_for_each(n, [&](std::size_t a) {
+      if (constrained[a]) { f[a].setZero(); return; }
+      const Index first = reference.offset(a);
+      const auto list = reference.of(a);
+      Vec2 force = vol0[a] * (stress[a] * w_sum[a]);
+      for (std::size_t k = 0; k < list.size(); ++k) force -= vol0[list[k].j] * (stress[list[k].j] * w_reverse[first + k]);
+      f[a] = force / mass[a];
+    });
+    Real norm_u = 0.0, norm_f = 0.0;
+    for (std::size_t a = 0; a < n; ++a) { norm_u += u[a].squaredNorm(); norm_f += f[a].squaredNorm(); }
+    if (norm_f == 0.0 || norm_u == 0.0) return 0.0;
+    estimate = std::sqrt(norm_f / norm_u);
+    const Real scale = 1.0 / std::sqrt(norm_f);
+    for (std::size_t a = 0; a < n; ++a) u[a] = f[a] * scale;
+  }
+  return estimate;
+}
+
+}  // namespace mrsph

@@ -1,0 +1,82 @@
+#include "time/velocity_verlet_schedule.hpp"
+
+#include "fluid/acoustic_step.hpp"
+#include "fluid/density_summation.hpp"
+#include "fluid/fluid_time_step.hpp"
+#include "fluid/transport_velocity.hpp"
+#include "fluid/viscous_force.hpp"
+#include "fsi/fluid_solid_coupling.hpp"
+#include "solid/solid_dynamics.hpp"
+#include "time/step_splitting.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace mrsph {
+
+namespace {
+
+void integrate_solid_velocity_verlet(SolidBody& solid, const Simulation& sim, Real t, Real dt, long long& count) {
+  Real elapsed = 0.0;
+  for (bool last = false; !last;) {
+    const SplitStep step = split_remaining(dt - elapsed, solid_time_step(solid));
+    last = step.last;
+    const Vec2 g = sim.body_force_on_solids ? sim.body_force.at(t + elapsed + step.size) : Vec2::Zero();
+    solid_substep_velocity_verlet(solid, step.size, g);
+    elapsed += step.size;
+    ++count;
+  }
+}
+
+void evaluate_forces(Simulation& sim, const Vec2& g) {
+  FluidBody& fluid = sim.fluid();
+  compute_pressure_interaction(fluid, sim.fluid_inner(), sim.fluid_contacts(), g);
+  for (std::size_t s = 0; s < sim.solids().size(); ++s) set_force_from_fluid(sim.solid_contact(s), sim.solids()[s].particles);
+}
+
+}  // namespace
+
+Real VelocityVerletSchedule::advance(Simulation& sim, Real max_step) {
+  if (!sim.has_fluid()) throw std::invalid_argument("multi_step_velocity_verlet needs a fluid body");
+  FluidBody& fluid = sim.fluid();
+  std::vector<FluidContact>& contacts = sim.fluid_contacts();
+  const NeighborList& inner = sim.fluid_inner();
+  const Real t0 = sim.time;
+  const Real Dt = std::min(advection_time_step(fluid, sim.body_force.at(t0)), max_step);
+
+  reinitialise_density(fluid, inner, contacts);
+  compute_viscous_force(fluid, inner, contacts);
+  correct_transport_velocity(fluid, inner, contacts);
+  for (SolidBody& solid : sim.solids()) update_solid_normals(solid);
+  // The pair lists were rebuilt: forces of the current state on the new lists.
+  advance_density_and_position(fluid, 0.0, 0.0);
+  evaluate_forces(sim, sim.body_force.at(t0));
+
+  Real elapsed = 0.0;
+  for (bool last = false; !last;) {
+    const SplitStep step = split_remaining(Dt - elapsed, acoustic_time_step(fluid));
+    const Real dt = step.size;
+    last = step.last;
+    kick(fluid, 0.5 * dt, sim.body_force.at(sim.time));
+    advance_position(fluid, dt);
+    add_velocity_divergence_and_dissipation(fluid, inner, contacts);
+    advance_density_and_position(fluid, dt, 0.0);
+    for (SolidBody& solid : sim.solids()) {
+      begin_kinematics_average(solid.particles);
+      integrate_solid_velocity_verlet(solid, sim, sim.time, dt, sim.steps.solid);
+      end_kinematics_average(solid.particles, dt, sim.solid_kinematics);
+    }
+    elapsed += dt;
+    sim.time = last ? t0 + Dt : t0 + elapsed;
+    evaluate_forces(sim, sim.body_force.at(sim.time));
+    kick(fluid, 0.5 * dt, sim.body_force.at(sim.time));
+    if (sim.inflow) sim.inflow->apply(fluid.particles, sim.time, sim.box());
+    ++sim.steps.acoustic;
+  }
+  sim.check_divergence();
+  sim.rebuild_fluid_relations();
+  ++sim.steps.advection;
+  return Dt;
+}
+
+}  // namespace mrsph
