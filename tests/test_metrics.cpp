@@ -26,6 +26,20 @@ TEST_CASE("Oscillation metrics recover mean, amplitude and frequency of a sine",
   CHECK(*f == Approx(0.19).epsilon(2e-3));
 }
 
+TEST_CASE("A moving average removes noise and keeps a slow oscillation", "[metrics]") {
+  std::vector<double> t, y;
+  for (int k = 0; k <= 10000; ++k) {
+    t.push_back(k * 0.01);
+    y.push_back(std::sin(2 * M_PI * 0.2 * t.back()) + 0.3 * ((k % 2) ? 1.0 : -1.0));  // alternating noise
+  }
+  const auto smooth = moving_average(t, y, 0.5);
+  // A box filter of width w scales a sinusoid of frequency f by sinc = sin(pi f w) / (pi f w)
+  // (0.984 here); the alternating noise averages to 0.3 / 51 over the 51 samples of the window.
+  const double sinc = std::sin(M_PI * 0.2 * 0.5) / (M_PI * 0.2 * 0.5);
+  for (std::size_t k = 100; k + 100 < t.size(); ++k)
+    REQUIRE(smooth[k] == Approx(sinc * std::sin(2 * M_PI * 0.2 * t[k])).margin(0.3 / 51 + 1e-3));
+}
+
 TEST_CASE("Oscillation metrics refuse a signal with too few cycles", "[metrics]") {
   std::vector<double> t{0, 1, 2, 3, 4, 5, 6, 7, 8, 9}, y{0, 1, 0, -1, 0, 1, 0, -1, 0, 1};
   CHECK_FALSE(oscillation_stats(t, y, 8.5));

@@ -28,6 +28,14 @@ class WendlandC2 {
     return factor_dW_ * q * a * a * a;
   }
   Real W0() const { return factor_W_; }
+  // W and dW/dr together (shared terms), for r < cutoff.
+  void values(Real r, Real& w, Real& dw) const {
+    const Real q = r * inv_h_;
+    const Real a = 1.0 - 0.5 * q;
+    const Real a3 = a * a * a;
+    w = factor_W_ * a3 * a * (1.0 + 2.0 * q);
+    dw = factor_dW_ * q * a3;
+  }
 
  private:
   Real h_, inv_h_, factor_W_, factor_dW_;

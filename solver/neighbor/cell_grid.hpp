@@ -42,6 +42,16 @@ class CellGrid {
       }
     }
   }
+  // False if no cell within one cell of the query's holds particles' grid extent: the query point is
+  // out of reach of every particle (a cheap test before the 3x3 stencil).
+  bool within_reach(const Vec2& query) const {
+    for (int a = 0; a < 2; ++a) {
+      if (box_.periodic[a]) continue;
+      const int c = cell_coordinate(query[a], a);
+      if (c < -1 || c > cells_[a]) return false;
+    }
+    return true;
+  }
   Index sorted_index(Index k) const { return sorted_[k]; }
   const Vec2& sorted_position(Index k) const { return sorted_pos_[k]; }
 

@@ -27,6 +27,7 @@ void NeighborList::build(const Vec2Array& queries, const CellGrid& target, const
     const std::size_t begin = c * kChunk, end = std::min(n, begin + kChunk);
     for (std::size_t i = begin; i < end; ++i) {
       const Vec2 xi = box.wrap(queries[i]);
+      if (!target.within_reach(xi)) continue;  // counts[i] stays 0
       const std::size_t before = out.size();
       // Pass 1: a tight distance filter that only records the accepted pairs.
       target.for_each_cell_near(xi, [&](Index k_begin, Index k_end, const Vec2& image) {
@@ -45,10 +46,9 @@ void NeighborList::build(const Vec2Array& queries, const CellGrid& target, const
         Neighbor& nb = out[m];
         const Real r = std::sqrt(nb.r);
         nb.r = r;
-        nb.W = kernel.W(r);
-        nb.dW = kernel.dW(r);
+        kernel.values(r, nb.W, nb.dW);
         // Coincident particles of different bodies: no direction; W counts, dW is zero at r = 0.
-        nb.e = r > 0.0 ? Vec2(nb.e / r) : Vec2::Zero();
+        nb.e = r > 0.0 ? Vec2(nb.e * (1.0 / r)) : Vec2::Zero();
       }
       counts[i] = static_cast<Index>(out.size() - before);
     }

@@ -17,6 +17,18 @@ double interpolate(const std::vector<double>& t, const std::vector<double>& y, d
   return (1.0 - w) * y[k - 1] + w * y[k];
 }
 
+std::vector<double> moving_average(const std::vector<double>& t, const std::vector<double>& y, double window) {
+  std::vector<double> out(y.size());
+  std::size_t lo = 0, hi = 0;
+  double sum = 0.0;
+  for (std::size_t k = 0; k < y.size(); ++k) {
+    while (hi < y.size() && t[hi] <= t[k] + 0.5 * window) sum += y[hi++];
+    while (t[lo] < t[k] - 0.5 * window) sum -= y[lo++];
+    out[k] = sum / static_cast<double>(hi - lo);
+  }
+  return out;
+}
+
 namespace {
 
 double mean_of(const std::vector<double>& v) { return std::accumulate(v.begin(), v.end(), 0.0) / v.size(); }

@@ -43,6 +43,10 @@ struct CurveComparison {
 std::optional<CurveComparison> compare_curves(const std::vector<double>& t_run, const std::vector<double>& y_run,
                                               const std::vector<double>& t_ref, const std::vector<double>& y_ref);
 
+// Centred moving average of y over a time window (samples within +/- window/2): removes
+// high-frequency noise (SPH pressure noise in forces) before cycles are detected.
+std::vector<double> moving_average(const std::vector<double>& t, const std::vector<double>& y, double window);
+
 // Linear interpolation of (t, y) at time s (clamped to the ends). t must be increasing.
 double interpolate(const std::vector<double>& t, const std::vector<double>& y, double s);
 

@@ -1,6 +1,7 @@
 #include "suites/suite.hpp"
 #include "suites/momentum_suite.hpp"
 #include "suites/oscillating_plate_suite.hpp"
+#include "suites/turek_hron_suite.hpp"
 #include "suites/womersley_suite.hpp"
 
 namespace mrsph::verification {
@@ -13,6 +14,8 @@ const std::vector<SuiteEntry>& registered_suites() {
        run_oscillating_plate_suite},
       {"momentum", "closed FSI box: total momentum for position- and velocity-based Verlet, multi- and single-step",
        run_momentum_suite},
+      {"turek-hron", "FSI2 beam behind a cylinder (Re 100): cases I-IV (+V) vs Turek-Hron and the paper's Table 2",
+       run_turek_hron_suite},
   };
   return suites;
 }

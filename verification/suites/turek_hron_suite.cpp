@@ -1,0 +1,220 @@
+// verify --suite turek-hron: the FSI2 beam behind a cylinder (CASES.md section 1), the paper's
+// cases I-IV (and V: the finer beam of case II at case III's fluid resolution, ratio 4).
+//   tip metrics (from the displacement of the beam's free-end centre S, after the settling time):
+//     amplitude_y = mean half peak-to-peak of y per cycle (A_y / D with D = 1), strouhal = f_y D/U0,
+//     mean_x, amplitude_x, frequency_x / frequency_y (the 2:1 Lissajous figure), mean_y;
+//     drag and lift on cylinder + beam (mean, half peak-to-peak).
+//   cost: wall and CPU time, particles per body, advection / acoustic / solid steps.
+// Full mode: t = 200, statistics over t >= 100 (as the paper's code's runs here). Quick mode:
+// case III to t = 60: the self-excited oscillation must grow and oscillate at the published St.
+#include "suites/turek_hron_suite.hpp"
+
+#include "io/csv_table.hpp"
+#include "metrics/signal_metrics.hpp"
+#include "report/reference_table.hpp"
+#include "suites/scene_run.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <map>
+
+namespace mrsph::verification {
+
+namespace {
+
+struct FsiCase {
+  std::string name;
+  int ratio;
+  int resolution;
+  std::string schedule;
+};
+
+struct FsiResult {
+  FsiCase c;
+  bool diverged = false;
+  double wall_s = NAN;
+  Json metrics = Json::object();
+};
+
+std::vector<double> column(const ObserverSeries& s, std::size_t c) {
+  std::vector<double> out;
+  for (const auto& row : s.values) out.push_back(row[c]);
+  return out;
+}
+
+const ObserverSeries& series_named(const RunResult& r, const std::string& name) {
+  for (const auto& s : r.series)
+    if (s.name == name) return s;
+  throw std::runtime_error("no observer series '" + name + "'");
+}
+
+FsiResult run_case(const SuiteContext& ctx, const FsiCase& c, double end_time, double settle, SuiteSummary& summary) {
+  if (ctx.log) ctx.log(fmt::format("turek-hron: case {} (ratio {}, bh/dp_S = {}, {}, t = {:g})", c.name, c.ratio,
+                                   c.resolution, c.schedule, end_time));
+  const std::vector<std::string> overrides{fmt::format("parameters.ratio={}", c.ratio),
+                                           fmt::format("parameters.resolution={}", c.resolution),
+                                           fmt::format("schedule.type=\"{}\"", c.schedule)};
+  SceneRun run = run_scene(ctx, "turek_hron_fsi2.json", overrides, [&](const LoadedScene&) {
+    RunOptions options;
+    options.end_time = end_time;
+    return options;
+  });
+  FsiResult out{c};
+  out.diverged = run.result.divergence.has_value();
+  out.wall_s = run.result.wall_s;
+  write_observer_series(run.result.series, ctx.out_dir / ("case_" + c.name));
+
+  const ObserverSeries& tip = series_named(run.result, "tip");
+  const ObserverSeries& forces = series_named(run.result, "forces");
+  const std::vector<double> x = column(tip, 0), y = column(tip, 1);
+  Json& m = out.metrics;
+  if (const auto sy = oscillation_stats(tip.time, y, settle)) {
+    m["amplitude_y"] = sy->amplitude;
+    m["amplitude_y_spread"] = sy->amplitude_spread;
+    m["strouhal"] = sy->frequency;  // D = U0 = 1
+    m["strouhal_spread"] = sy->frequency_spread;
+    m["mean_y"] = sy->mean;
+    m["cycles"] = sy->cycles;
+    if (const auto f = spectral_peak_frequency(tip.time, y, settle, 0.05, 1.0)) m["strouhal_spectral"] = *f;
+  }
+  if (const auto sx = oscillation_stats(tip.time, x, settle)) {
+    m["mean_x"] = sx->mean;
+    m["amplitude_x"] = sx->amplitude;
+    m["frequency_x"] = sx->frequency;
+    if (m.contains("strouhal")) m["frequency_ratio_x_to_y"] = sx->frequency / m["strouhal"].get<double>();
+  }
+  // Forces carry SPH pressure noise: smoothed over 0.5 D/U0 (a tenth of the lift period) first,
+  // which lowers the lift amplitude by sinc(pi f w) = 1.6 % and the drag amplitude by 6 %.
+  const double window = 0.5;
+  if (const auto drag = oscillation_stats(forces.time, moving_average(forces.time, column(forces, 0), window), settle)) {
+    m["drag_mean"] = drag->mean;
+    m["drag_amplitude"] = drag->amplitude;
+  }
+  if (const auto lift = oscillation_stats(forces.time, moving_average(forces.time, column(forces, 1), window), settle)) {
+    m["lift_mean"] = lift->mean;
+    m["lift_amplitude"] = lift->amplitude;
+  }
+  // Growth of the self-excited oscillation: half peak-to-peak of y over the last 10 time units.
+  double lo = INFINITY, hi = -INFINITY;
+  for (std::size_t k = 0; k < y.size(); ++k)
+    if (tip.time[k] >= end_time - 10.0) { lo = std::min(lo, y[k]); hi = std::max(hi, y[k]); }
+  m["amplitude_y_last_10"] = 0.5 * (hi - lo);
+
+  SuiteRun record;
+  record.case_name = c.name;
+  record.config = {{"ratio", c.ratio}, {"resolution", c.resolution}, {"schedule", c.schedule},
+                   {"dp_solid", run.scene.parameters.at("dp_solid")}, {"dp_fluid", run.scene.parameters.at("dp_fluid")},
+                   {"end_time", end_time}, {"settle_time", settle}, {"scene", "turek_hron_fsi2.json"},
+                   {"solid_damping", run.scene.parameters.at("damping")}};
+  record.metrics = m;
+  record.cost = cost_json(run);
+  record.diverged = out.diverged;
+  record.divergence = divergence_record(run);
+  summary.add_run(std::move(record));
+  return out;
+}
+
+double metric(const FsiResult& r, const char* name) {
+  return r.metrics.contains(name) ? r.metrics[name].get<double>() : NAN;
+}
+
+// The paper's code's tip curve, measured here (for the figure), if the reference directory has it.
+void copy_peer_curve(const SuiteContext& ctx, SuiteSummary& summary) {
+  if (!ctx.reference_dir) {
+    summary.note_skipped("the paper's code's tip curve", "no --reference-dir given");
+    return;
+  }
+  const auto path = *ctx.reference_dir / "sphinxsys" / "runs-here" / "fsi2_BeamObserver_Position_everystep.dat";
+  const auto table = read_numeric_table(path);
+  if (!table || table->columns.size() < 3) {
+    summary.note_skipped("the paper's code's tip curve", path.string() + " is missing");
+    return;
+  }
+  CsvTable peer;
+  peer.columns = {"time", "dx", "dy"};
+  const double x0 = table->columns[1].front(), y0 = table->columns[2].front();
+  for (std::size_t k = 0; k < table->columns[0].size(); ++k)
+    peer.add_row({table->columns[0][k], table->columns[1][k] - x0, table->columns[2][k] - y0});
+  peer.write(ctx.out_dir / "peer_sphinxsys_tip.csv");
+}
+
+}  // namespace
+
+SuiteSummary run_turek_hron_suite(const SuiteContext& ctx) {
+  SuiteSummary summary("turek-hron", ctx.quick, ctx.threads);
+  const Json refs = read_project_reference(ctx.project_dir, "turek_hron_fsi2.json");
+  const Json& range = refs["published_range"];
+  const std::string range_source = range["source"];
+
+  std::vector<FsiCase> cases;
+  if (ctx.quick) {
+    cases = {{"III", 2, 4, "multi_step_position_verlet"}};
+  } else {
+    cases = {{"I", 1, 4, "multi_step_position_verlet"},
+             {"II", 1, 8, "multi_step_position_verlet"},
+             {"III", 2, 4, "multi_step_position_verlet"},
+             {"IV", 2, 4, "single_step_position_verlet"},
+             {"V", 4, 8, "multi_step_position_verlet"}};
+  }
+  const double end_time = ctx.quick ? 60.0 : 200.0;
+  const double settle = ctx.quick ? 30.0 : 100.0;
+  std::map<std::string, FsiResult> results;
+  for (const FsiCase& c : cases) results.emplace(c.name, run_case(ctx, c, end_time, settle, summary));
+
+  const FsiResult& III = results.at("III");
+  if (III.diverged) {
+    summary.check_missing("case III runs to the end", "diverged", "issue 4");
+  } else if (ctx.quick) {
+    // The frequency is set while the oscillation grows; the amplitude needs t > 50 to saturate.
+    summary.check_range("case III strouhal (t = 30-60)", metric(III, "strouhal"), range["strouhal"][0],
+                        range["strouhal"][1], range_source);
+    summary.check_range("case III oscillation has grown: half peak-to-peak of y over t = 50-60",
+                        metric(III, "amplitude_y_last_10"), 0.6, 1.0,
+                        "the self-excited oscillation reaches about 0.8 D after t = 50 (paper Fig. 5, Turek & Hron)");
+  } else {
+    summary.check_range("case III amplitude_y (A_y/D)", metric(III, "amplitude_y"), range["amplitude_y"][0],
+                        range["amplitude_y"][1], range_source);
+    summary.check_range("case III strouhal", metric(III, "strouhal"), range["strouhal"][0], range["strouhal"][1], range_source);
+    summary.check_range("case III x:y frequency ratio (Lissajous 2:1)", metric(III, "frequency_ratio_x_to_y"), 1.95, 2.05,
+                        "paper section 4.1 and Bhardwaj & Mittal 2012: a 2:1 Lissajous figure");
+    const FsiResult& IV = results.at("IV");
+    summary.check_range("speed-up of multiple over single time steps (wall IV / wall III)", IV.wall_s / III.wall_s, 1.0,
+                        1e9, "issue 4: multiple steps beat the single step by a measured factor (paper: 1.8)");
+    if (ctx.threads == 2)
+      summary.check_at_most("case III wall time to t = 200 on 2 threads [s]", III.wall_s, 60.0,
+                            "issue 4 acceptance; the paper's code takes about 100 s here (runs-here)");
+    else
+      summary.note_skipped("case III wall-time check", "needs --threads 2 (the acceptance is stated for 2 threads)");
+  }
+
+  // Table of cases beside the paper's Table 2 and the references.
+  Json table = Json::array();
+  const Json& paper = refs["paper_table_2"]["cases"];
+  for (const auto& [name, r] : results) {
+    Json row = {{"case", name}, {"ratio", r.c.ratio}, {"resolution", r.c.resolution}, {"schedule", r.c.schedule},
+                {"amplitude_y", metric(r, "amplitude_y")}, {"strouhal", metric(r, "strouhal")},
+                {"mean_x", metric(r, "mean_x")}, {"amplitude_x", metric(r, "amplitude_x")}, {"wall_s", r.wall_s},
+                {"diverged", r.diverged}};
+    if (paper.contains(name))
+      row["paper"] = {{"amplitude_y", paper[name]["amplitude_y"]}, {"strouhal", paper[name]["strouhal"]},
+                      {"cpu_s", paper[name]["cpu_s"]}, {"particles", paper[name]["particles"]}};
+    table.push_back(row);
+  }
+  summary.extra()["table"] = table;
+  Json speedups = Json::object();
+  if (results.count("I")) speedups["III_vs_I"] = results.at("I").wall_s / III.wall_s;
+  if (results.count("IV")) speedups["III_vs_IV"] = results.at("IV").wall_s / III.wall_s;
+  speedups["paper_III_vs_I"] = paper["I"]["cpu_s"].get<double>() / paper["III"]["cpu_s"].get<double>();
+  speedups["paper_III_vs_IV"] = paper["IV"]["cpu_s"].get<double>() / paper["III"]["cpu_s"].get<double>();
+  summary.extra()["speedups"] = speedups;
+  summary.extra()["references"] = {{"turek_hron", refs["turek_hron_2006"]}, {"paper_code_here", refs["paper_code_here"]},
+                                   {"paper_table_3", refs["paper_table_3"]}};
+  copy_peer_curve(ctx, summary);
+  summary.write(ctx.out_dir);
+  render_figures(ctx, "plot_turek_hron.py", summary);
+  summary.write(ctx.out_dir);
+  return summary;
+}
+
+}  // namespace mrsph::verification
