@@ -22,7 +22,7 @@ void InflowBuffer::apply(FluidParticles& fluid, Real t, const DomainBox& box) co
   parallel_for_each(fluid.size(), [&](std::size_t i) {
     const Vec2 p = box.wrap(fluid.pos[i]);
     if (region->contains(p)) fluid.vel[i] = profile.velocity(p, t);
-  });
+  }, kGrainSimpleLoop);
 }
 
 }  // namespace mrsph

@@ -14,17 +14,17 @@ void advance_density_and_position(FluidBody& fluid, Real dt_density, Real dt_pos
     f.p[i] = eos.pressure(f.rho[i]);
     f.vol[i] = f.mass[i] / f.rho[i];
     f.pos[i] += dt_position * f.vel[i];
-  });
+  }, kGrainSimpleLoop);
 }
 
 void advance_position(FluidBody& fluid, Real dt) {
   FluidParticles& f = fluid.particles;
-  parallel_for_each(f.size(), [&](std::size_t i) { f.pos[i] += dt * f.vel[i]; });
+  parallel_for_each(f.size(), [&](std::size_t i) { f.pos[i] += dt * f.vel[i]; }, kGrainSimpleLoop);
 }
 
 void advance_density(FluidBody& fluid, Real dt) {
   FluidParticles& f = fluid.particles;
-  parallel_for_each(f.size(), [&](std::size_t i) { f.rho[i] += dt * f.drho_dt[i]; });
+  parallel_for_each(f.size(), [&](std::size_t i) { f.rho[i] += dt * f.drho_dt[i]; }, kGrainSimpleLoop);
 }
 
 void compute_pressure_interaction(FluidBody& fluid, const NeighborList& inner, std::vector<FluidContact>& contacts,
@@ -66,7 +66,7 @@ void kick(FluidBody& fluid, Real dt, const Vec2& body_acceleration) {
   FluidParticles& f = fluid.particles;
   parallel_for_each(f.size(), [&](std::size_t i) {
     f.vel[i] += dt * ((f.pressure_force[i] + f.dissipation_force[i] + f.force_prior[i]) / f.mass[i] + body_acceleration);
-  });
+  }, kGrainSimpleLoop);
 }
 
 void add_velocity_divergence_and_dissipation(FluidBody& fluid, const NeighborList& inner,

@@ -13,6 +13,7 @@
 namespace mrsph {
 
 struct RiemannDissipation {
+ public:
   bool continuity = true;   // "1st-half Riemann": pressure difference in the continuity equation
   bool momentum = false;    // "2nd-half Riemann": velocity jump in the momentum equation
   bool damp_separating = false;
@@ -20,11 +21,24 @@ struct RiemannDissipation {
   Real impedance = 10.0;    // Z = rho0 c
   Real sound_speed = 10.0;
 
-  Real continuity_term(Real p_i, Real p_j) const { return (p_i - p_j) / impedance; }
+  // Per-pair terms; the reciprocals are set by configure() (no division in the pair loops).
+  Real continuity_term(Real p_i, Real p_j) const { return (p_i - p_j) * inverse_impedance_; }
   Real momentum_coefficient(Real u) const {
     const Real jump = damp_separating ? std::max(u, Real(0)) : std::max(-u, Real(0));
-    return impedance * u * std::min(limiter_eta * jump / sound_speed, Real(1));
+    return impedance * u * std::min(jump * eta_over_sound_speed_, Real(1));
   }
+  void configure(Real rho0, Real c) {
+    impedance = rho0 * c;
+    sound_speed = c;
+    inverse_impedance_ = 1.0 / impedance;
+    eta_over_sound_speed_ = limiter_eta / c;
+  }
+
+ private:
+  Real inverse_impedance_ = 0.1;
+  Real eta_over_sound_speed_ = 0.3;
+
+ public:
 };
 
 }  // namespace mrsph

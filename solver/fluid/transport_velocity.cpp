@@ -20,7 +20,7 @@ void correct_transport_velocity(FluidBody& fluid, const NeighborList& inner, con
     }
     shift[i] = -coefficient * residue;
   });
-  parallel_for_each(f.size(), [&](std::size_t i) { f.pos[i] += shift[i]; });
+  parallel_for_each(f.size(), [&](std::size_t i) { f.pos[i] += shift[i]; }, kGrainSimpleLoop);
 }
 
 }  // namespace mrsph

@@ -28,7 +28,7 @@ void begin_kinematics_average(SolidParticles& solid) {
   parallel_for_each(solid.size(), [&](std::size_t a) {
     solid.pos_acoustic_start[a] = solid.pos[a];
     solid.vel_acoustic_start[a] = solid.vel[a];
-  });
+  }, kGrainSimpleLoop);
 }
 
 void end_kinematics_average(SolidParticles& solid, Real dt, SolidKinematics mode) {
@@ -42,7 +42,7 @@ void end_kinematics_average(SolidParticles& solid, Real dt, SolidKinematics mode
     solid.acc_ave[a] = mode == SolidKinematics::Averaged ? Vec2((solid.vel[a] - solid.vel_acoustic_start[a]) / dt)
                                                          : Vec2((v_new - solid.vel_ave[a]) / dt);
     solid.vel_ave[a] = v_new;
-  });
+  }, kGrainSimpleLoop);
 }
 
 }  // namespace mrsph

@@ -136,8 +136,7 @@ FluidBody read_fluid(const SceneNode& node, const DomainBox& box, double& budget
     fluid.riemann.limiter_eta = r->positive_or("eta", 3.0);
     r->finish();
   }
-  fluid.riemann.impedance = m.eos.impedance();
-  fluid.riemann.sound_speed = m.eos.c0;
+  fluid.riemann.configure(m.eos.rho0, m.eos.c0);
 
   FluidOptions& o = fluid.options;
   o.density = node.choice_or("density_reinitialisation", {"internal", "free_surface"}, "internal") == "free_surface"

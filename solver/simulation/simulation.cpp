@@ -89,7 +89,7 @@ void Simulation::rebuild_fluid_relations() {
   if (!fluid_) return;
   FluidBody& fluid = *fluid_;
   FluidParticles& f = fluid.particles;
-  parallel_for_each(f.size(), [&](std::size_t i) { f.pos[i] = box_.wrap(f.pos[i]); });
+  parallel_for_each(f.size(), [&](std::size_t i) { f.pos[i] = box_.wrap(f.pos[i]); }, kGrainSimpleLoop);
   if (rebuilds_since_sort_++ % kSortInterval == 0) f.permute(cell_order(f.pos, box_, fluid.kernel.cutoff()));
 
   // Cell lists of every body first, from current positions; then all pair lists.

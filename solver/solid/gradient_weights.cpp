@@ -28,6 +28,8 @@ GradientWeights compute_gradient_weights(const NeighborList& reference, const Re
                                          GradientCorrection correction) {
   const std::size_t n = reference.size();
   GradientWeights g;
+  g.neighbor.resize(reference.pair_count());
+  for (std::size_t k = 0; k < reference.pair_count(); ++k) g.neighbor[k] = reference.entry(k).j;
   g.w.assign(reference.pair_count(), Vec2::Zero());
   g.w_reverse.assign(reference.pair_count(), Vec2::Zero());
   g.w_sum.assign(n, Vec2::Zero());

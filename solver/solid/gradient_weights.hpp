@@ -33,6 +33,7 @@ enum class GradientCorrection { FirstOrder, SecondOrder };
 GradientCorrection gradient_correction_from_name(const std::string& name);  // throws std::invalid_argument
 
 struct GradientWeights {
+  std::vector<Index> neighbor;  // per pair entry k = (a, b) of the reference list: b (compact copy)
   Vec2Array w;          // per pair entry k = (a, b) of the reference list: w_ab
   Vec2Array w_reverse;  // per pair entry k = (a, b): w_ba
   Vec2Array w_sum;      // per particle: sum_b w_ab

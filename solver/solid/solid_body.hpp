@@ -34,6 +34,9 @@ struct SolidBody {
   SolidParticles particles;
   NeighborList inner;  // reference configuration
   GradientWeights weights;  // per pair of `inner`, built once
+  // Particles the sub-steps must visit: the free ones and the clamped ones with a free neighbour.
+  // A clamped particle whose neighbours are all clamped keeps F = I and P = 0 for ever.
+  std::vector<Index> active;
 
   SolidBody(std::string body_name, Real spacing, Real h_over_dp, ElasticMaterial elastic)
       : name(std::move(body_name)), dp(spacing), kernel(h_over_dp * spacing), material(std::move(elastic)) {}

@@ -2,6 +2,7 @@
 
 #include "core/parallel.hpp"
 #include "geometry/particle_normals.hpp"
+#include "time/step_splitting.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -11,12 +12,24 @@ namespace mrsph {
 
 namespace {
 
+// Largest inverse time scale of the criterion over free particles: max(sqrt(|a|/h), (c + |v|)/h).
+Real particle_rate(const SolidBody& solid, std::size_t a) {
+  const SolidParticles& s = solid.particles;
+  if (s.constrained[a]) return 0.0;
+  return std::max(std::sqrt(s.acc[a].norm() / solid.h()), (solid.material.sound_speed() + s.vel[a].norm()) / solid.h());
+}
+
+Real criterion_from_rate(const SolidBody& solid, Real rate) {
+  return solid.options.cfl * solid.weights.time_step_scale / std::max(rate, solid.material.sound_speed() / solid.h());
+}
+
+
 Mat2 deformation_rate(const SolidBody& solid, std::size_t a) {
   const SolidParticles& s = solid.particles;
-  const auto list = solid.inner.of(a);
-  const Index first = solid.inner.offset(a);
+  const GradientWeights& g = solid.weights;
+  const Index end = solid.inner.offset(a + 1);
   Mat2 rate = Mat2::Zero();
-  for (std::size_t k = 0; k < list.size(); ++k) rate += (s.vel[list[k].j] - s.vel[a]) * solid.weights.w[first + k].transpose();
+  for (Index k = solid.inner.offset(a); k < end; ++k) rate += (s.vel[g.neighbor[k]] - s.vel[a]) * g.w[k].transpose();
   return rate;
 }
 
@@ -50,18 +63,17 @@ void initialise_solid(SolidBody& solid) {
   });
   s.normal0 = normals_from_kernel_gradient(s.vol0, solid.inner);
   s.normal = s.normal0;
+  solid.active.clear();
+  for (std::size_t a = 0; a < s.size(); ++a) {
+    bool needed = !s.constrained[a];
+    for (const Neighbor& n : solid.inner.of(a)) needed = needed || !s.constrained[n.j];
+    if (needed) solid.active.push_back(static_cast<Index>(a));
+  }
 }
 
 Real solid_time_step(const SolidBody& solid) {
   const SolidParticles& s = solid.particles;
-  const Real h = solid.h();
-  const Real c = solid.material.sound_speed();
-  // Largest inverse time scale over free particles: max( sqrt(|a|/h), (c + |v|)/h ).
-  const Real rate = parallel_max(s.size(), [&](std::size_t a) {
-    if (s.constrained[a]) return 0.0;
-    return std::max(std::sqrt(s.acc[a].norm() / h), (c + s.vel[a].norm()) / h);
-  }, c / h);
-  return solid.options.cfl * solid.weights.time_step_scale / rate;
+  return criterion_from_rate(solid, parallel_max(s.size(), [&](std::size_t a) { return particle_rate(solid, a); }, 0.0));
 }
 
 void compute_deformation_rate(SolidBody& solid) {
@@ -95,39 +107,84 @@ void compute_stress(SolidBody& solid) {
 
 Vec2 internal_force(const SolidBody& solid, std::size_t a) {
   const SolidParticles& s = solid.particles;
-  const auto list = solid.inner.of(a);
-  const Index first = solid.inner.offset(a);
-  Vec2 force = s.vol0[a] * (s.stress[a] * solid.weights.w_sum[a]);
-  for (std::size_t k = 0; k < list.size(); ++k) force -= s.vol0[list[k].j] * (s.stress[list[k].j] * solid.weights.w_reverse[first + k]);
+  const GradientWeights& g = solid.weights;
+  const Index end = solid.inner.offset(a + 1);
+  Vec2 force = s.vol0[a] * (s.stress[a] * g.w_sum[a]);
+  for (Index k = solid.inner.offset(a); k < end; ++k) {
+    const Index b = g.neighbor[k];
+    force -= s.vol0[b] * (s.stress[b] * g.w_reverse[k]);
+  }
   return force;
 }
 
-void solid_substep(SolidBody& solid, Real dt, const Vec2& body_acceleration) {
-  SolidParticles& s = solid.particles;
-  const ElasticMaterial& material = solid.material;
-  const Real eta = damping_viscosity(solid);
+namespace {
 
-  parallel_for_each(s.size(), [&](std::size_t a) {
-    if (!s.constrained[a]) s.pos[a] += 0.5 * dt * s.vel[a];
-    s.F[a] += 0.5 * dt * s.dF_dt[a];
-    s.rho[a] = material.density() / s.F[a].determinant();
+// r += h v (free particles); F += h dF/dt; rho and P from F.
+void half_step(SolidBody& solid, Real h, Real eta) {
+  SolidParticles& s = solid.particles;
+  parallel_for_each(solid.active.size(), [&](std::size_t k) {
+    const Index a = solid.active[k];
+    if (!s.constrained[a]) s.pos[a] += h * s.vel[a];
+    s.F[a] += h * s.dF_dt[a];
+    s.rho[a] = solid.material.density() / s.F[a].determinant();
     s.stress[a] = total_stress(solid, s.F[a], s.dF_dt[a], eta);
   });
-  parallel_for_each(s.size(), [&](std::size_t a) {
+}
+
+// v += dt a with a = (f + F^prior)/m + g; r += dt/2 v. Returns the criterion's rate.
+Real momentum_pass(SolidBody& solid, Real dt, const Vec2& g) {
+  SolidParticles& s = solid.particles;
+  return parallel_max(solid.active.size(), [&](std::size_t k) {
+    const Index a = solid.active[k];
     if (s.constrained[a]) {
       s.vel[a].setZero();
       s.acc[a].setZero();
       s.pos[a] = s.pos0[a];
-      return;
+      return 0.0;
     }
-    s.acc[a] = (internal_force(solid, a) + s.force_prior[a]) / s.mass[a] + body_acceleration;
+    s.acc[a] = (internal_force(solid, a) + s.force_prior[a]) / s.mass[a] + g;
     s.vel[a] += dt * s.acc[a];
     s.pos[a] += 0.5 * dt * s.vel[a];
-  });
-  parallel_for_each(s.size(), [&](std::size_t a) {
+    return particle_rate(solid, a);
+  }, 0.0);
+}
+
+// dF/dt from the new velocities; F += h_end dF/dt ends this sub-step. Then the first half of the
+// next one (h_next > 0): r += h_next v; F += h_next dF/dt; rho and P.
+void deformation_pass(SolidBody& solid, Real h_end, Real h_next, Real eta) {
+  SolidParticles& s = solid.particles;
+  parallel_for_each(solid.active.size(), [&](std::size_t k) {
+    const Index a = solid.active[k];
     s.dF_dt[a] = deformation_rate(solid, a);
-    s.F[a] += 0.5 * dt * s.dF_dt[a];
+    s.F[a] += (h_end + h_next) * s.dF_dt[a];
+    if (h_next == 0.0) return;
+    if (!s.constrained[a]) s.pos[a] += h_next * s.vel[a];
+    s.rho[a] = solid.material.density() / s.F[a].determinant();
+    s.stress[a] = total_stress(solid, s.F[a], s.dF_dt[a], eta);
   });
+}
+
+}  // namespace
+
+long long advance_solid(SolidBody& solid, Real t, Real dt, const std::function<Vec2(Real)>& body_acceleration) {
+  const Real eta = damping_viscosity(solid);
+  const Real rate0 = parallel_max(solid.active.size(), [&](std::size_t k) { return particle_rate(solid, solid.active[k]); }, 0.0);
+  SplitStep step = split_remaining(dt, criterion_from_rate(solid, rate0));
+  half_step(solid, 0.5 * step.size, eta);
+  Real elapsed = 0.0;
+  long long count = 0;
+  for (;;) {
+    const Real rate = momentum_pass(solid, step.size, body_acceleration(t + elapsed + 0.5 * step.size));
+    elapsed += step.size;
+    ++count;
+    if (step.last) {
+      deformation_pass(solid, 0.5 * step.size, 0.0, eta);
+      return count;
+    }
+    const SplitStep next = split_remaining(dt - elapsed, criterion_from_rate(solid, rate));
+    deformation_pass(solid, 0.5 * step.size, 0.5 * next.size, eta);
+    step = next;
+  }
 }
 
 void solid_substep_velocity_verlet(SolidBody& solid, Real dt, const Vec2& body_acceleration) {

@@ -10,6 +10,8 @@
 
 #include "solid/solid_body.hpp"
 
+#include <functional>
+
 namespace mrsph {
 
 // Builds the reference neighbour list, the gradient weights, the reference normals, and sets
@@ -20,9 +22,13 @@ void initialise_solid(SolidBody& solid);
 // s the stiffness scale of the gradient weights (1 for the paper's B0; gradient_weights.hpp).
 Real solid_time_step(const SolidBody& solid);
 
-// One position-based Verlet sub-step (Eqs. 39-41): half step of r and F, full step of v, half
-// step of r and F. Constrained particles keep r = r0 and v = 0; their F still evolves.
-void solid_substep(SolidBody& solid, Real dt, const Vec2& body_acceleration);
+// Advances the solid over [t, t + dt] with position-based Verlet sub-steps (Eqs. 39-41: half step of
+// r and F, full step of v, half step of r and F) that respect the criterion and sum to dt exactly
+// (kappa = ceil(dt / dt_S), re-evaluated every sub-step). The second half of one sub-step and the
+// first half of the next are done in one pass over the particles. Constrained particles keep
+// r = r0 and v = 0; their F still evolves. body_acceleration(t) is g at time t (sampled at the
+// middle of each sub-step). Returns the number of sub-steps.
+long long advance_solid(SolidBody& solid, Real t, Real dt, const std::function<Vec2(Real)>& body_acceleration);
 
 // The operators a sub-step is made of, exposed for tests and diagnostics:
 // dF/dt of every particle from the current velocities.

@@ -15,17 +15,9 @@
 namespace mrsph {
 
 long long integrate_solid_over(SolidBody& solid, const Simulation& sim, Real t, Real dt) {
-  long long count = 0;
-  Real elapsed = 0.0;
-  for (bool last = false; !last;) {
-    const SplitStep step = split_remaining(dt - elapsed, solid_time_step(solid));
-    last = step.last;
-    const Vec2 g = sim.body_force_on_solids ? sim.body_force.at(t + elapsed + 0.5 * step.size) : Vec2::Zero();
-    solid_substep(solid, step.size, g);
-    elapsed += step.size;
-    ++count;
-  }
-  return count;
+  return advance_solid(solid, t, dt, [&](Real time) {
+    return sim.body_force_on_solids ? sim.body_force.at(time) : Vec2::Zero();
+  });
 }
 
 Real PositionVerletSchedule::advance_solids_only(Simulation& sim, Real max_step) {
