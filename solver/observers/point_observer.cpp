@@ -25,15 +25,20 @@ PointObserver::PointObserver(ObserverSpec spec, const Simulation& sim) : spec_(s
   const std::string& body = spec_.bodies.front();
   if (sim.has_fluid() && sim.fluid().name == body) {
     target_ = Target::Fluid;
-    if (spec_.quantity != ObservedQuantity::Velocity && spec_.quantity != ObservedQuantity::Pressure)
-      throw std::invalid_argument("observer '" + spec_.name + "': a fluid body is observed as velocity or pressure");
+    if (spec_.quantity != ObservedQuantity::Velocity && spec_.quantity != ObservedQuantity::Pressure &&
+        spec_.quantity != ObservedQuantity::Front)
+      throw std::invalid_argument("observer '" + spec_.name + "': a fluid body is observed as velocity, pressure or front");
+    if (spec_.quantity == ObservedQuantity::Front) {
+      if (!(spec_.direction.norm() > 0.0)) throw std::invalid_argument("observer '" + spec_.name + "': zero front direction");
+      spec_.direction.normalize();
+    }
     return;
   }
   for (std::size_t s = 0; s < sim.solids().size(); ++s) {
     if (sim.solids()[s].name != body) continue;
     target_ = Target::Solid;
     solid_index_ = s;
-    if (spec_.quantity == ObservedQuantity::Pressure)
+    if (spec_.quantity == ObservedQuantity::Pressure || spec_.quantity == ObservedQuantity::Front)
       throw std::invalid_argument("observer '" + spec_.name + "': a solid is observed as position, displacement or velocity");
     const SolidBody& solid = sim.solids()[s];
     const SolidParticles& p = solid.particles;
@@ -71,6 +76,7 @@ std::vector<std::string> PointObserver::columns() const {
     case ObservedQuantity::Velocity: return {"u", "v"};
     case ObservedQuantity::Pressure: return {"p"};
     case ObservedQuantity::Force: return {"fx", "fy"};
+    case ObservedQuantity::Front: return {"front"};
   }
   return {};
 }
@@ -95,6 +101,11 @@ std::vector<Real> PointObserver::sample(const Simulation& sim) const {
   }
   const FluidBody& fluid = sim.fluid();
   const FluidParticles& f = fluid.particles;
+  if (spec_.quantity == ObservedQuantity::Front) {
+    Real front = -std::numeric_limits<Real>::infinity();
+    for (const Vec2& p : f.pos) front = std::max(front, p.dot(spec_.direction));
+    return {front};
+  }
   Real weight = 0.0, pressure = 0.0;
   Vec2 velocity = Vec2::Zero();
   for (std::size_t i = 0; i < f.size(); ++i) {

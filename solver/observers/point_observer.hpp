@@ -6,6 +6,8 @@
 //   fluid body, "velocity" / "pressure": a Shepard average of the fluid particles within the
 //     fluid's kernel support of the point, at the sampling time.
 //   boundary bodies, "force": the total force of the fluid on the listed wall and solid bodies.
+//   fluid body, "front": the largest coordinate of the fluid particles along a direction (the
+//     surge front of a dam break), max_i r_i . d.
 #pragma once
 
 #include "simulation/simulation.hpp"
@@ -15,12 +17,13 @@
 
 namespace mrsph {
 
-enum class ObservedQuantity { Position, Displacement, Velocity, Pressure, Force };
+enum class ObservedQuantity { Position, Displacement, Velocity, Pressure, Force, Front };
 
 struct ObserverSpec {
   std::string name;
   std::vector<std::string> bodies;  // one body, or several for "force"
   Vec2 point = Vec2::Zero();
+  Vec2 direction = Vec2(1.0, 0.0);  // for "front"
   ObservedQuantity quantity = ObservedQuantity::Position;
   bool nearest_particle = false;
 };

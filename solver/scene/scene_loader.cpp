@@ -226,11 +226,12 @@ void check_overlaps(const std::vector<PlacedBody>& bodies, const std::string& fi
 }
 
 ObservedQuantity read_quantity(const SceneNode& node) {
-  const std::string q = node.choice("quantity", {"position", "displacement", "velocity", "pressure", "force"});
+  const std::string q = node.choice("quantity", {"position", "displacement", "velocity", "pressure", "force", "front"});
   if (q == "position") return ObservedQuantity::Position;
   if (q == "displacement") return ObservedQuantity::Displacement;
   if (q == "velocity") return ObservedQuantity::Velocity;
   if (q == "pressure") return ObservedQuantity::Pressure;
+  if (q == "front") return ObservedQuantity::Front;
   return ObservedQuantity::Force;
 }
 
@@ -358,7 +359,8 @@ LoadedScene build_scene(const Json& document, const std::string& file, const Sce
     } else {
       spec.bodies.push_back(node.text("body"));
     }
-    if (spec.quantity != ObservedQuantity::Force) spec.point = node.vec2("point");
+    if (spec.quantity == ObservedQuantity::Front) spec.direction = node.vec2_or("direction", spec.direction);
+    else if (spec.quantity != ObservedQuantity::Force) spec.point = node.vec2("point");
     spec.nearest_particle = node.flag_or("nearest_particle", false);
     node.finish();
     scene.observers.push_back(std::move(spec));

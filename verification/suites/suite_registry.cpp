@@ -1,4 +1,5 @@
 #include "suites/suite.hpp"
+#include "suites/antoci_suite.hpp"
 #include "suites/momentum_suite.hpp"
 #include "suites/oscillating_plate_suite.hpp"
 #include "suites/turek_hron_suite.hpp"
@@ -16,6 +17,8 @@ const std::vector<SuiteEntry>& registered_suites() {
        run_momentum_suite},
       {"turek-hron", "FSI2 beam behind a cylinder (Re 100): cases I-IV (+V) vs Turek-Hron and the paper's Table 2",
        run_turek_hron_suite},
+      {"antoci", "dam break through an elastic gate vs the Antoci experiment, cases I-IV; dry-bed dam break",
+       run_antoci_suite},
   };
   return suites;
 }

@@ -1,0 +1,303 @@
+// verify --suite antoci: dam break through an elastic gate (Antoci et al. 2007; CASES.md section 2),
+// the paper's cases I-IV, against the experiment.
+//   displacement of the gate's free end (positive downstream, i.e. towards -x here, and upward),
+//   in mm, compared at the experiment's times (Ex10X / Ex10Y, first sample subtracted: a
+//   digitisation offset, PROVENANCE.md): RMS and max error, the peak and its time.
+//   Antoci's SPH, Yang et al.'s SPH-FEM and the paper's code run here are drawn for comparison.
+//   Snapshots of case III at t = 0.04, 0.08, ..., 0.32 s (VTP and a CSV for the figure panel).
+//   A dry-bed dam break (Martin & Moyce 1952) is run as a free-surface sanity scene.
+#include "suites/antoci_suite.hpp"
+
+#include "io/csv_table.hpp"
+#include "metrics/signal_metrics.hpp"
+#include "report/reference_table.hpp"
+#include "suites/scene_run.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <map>
+
+namespace mrsph::verification {
+
+namespace {
+
+struct GateCase {
+  std::string name;
+  int ratio;
+  int resolution;
+  std::string schedule;
+  std::string gradient_correction = "second_order";
+};
+
+struct Curve {
+  std::vector<double> t, value;
+};
+
+// An Antoci-format curve (t [s], displacement [m]) in mm with the first sample subtracted.
+std::optional<Curve> read_reference_curve(const std::filesystem::path& path) {
+  const auto table = read_numeric_table(path);
+  if (!table || table->columns.size() < 2 || table->columns[0].empty()) return std::nullopt;
+  Curve c;
+  const double first = table->columns[1].front();
+  for (std::size_t k = 0; k < table->columns[0].size(); ++k) {
+    c.t.push_back(table->columns[0][k]);
+    c.value.push_back(1000.0 * (table->columns[1][k] - first));
+  }
+  return c;
+}
+
+struct GateResult {
+  GateCase c;
+  bool diverged = false;
+  double wall_s = NAN;
+  Curve x, y;  // mm
+  Json metrics = Json::object();
+};
+
+GateResult run_case(const SuiteContext& ctx, const GateCase& c, const std::optional<Curve>& exp_x,
+                    const std::optional<Curve>& exp_y, bool snapshots, SuiteSummary& summary) {
+  if (ctx.log) ctx.log(fmt::format("antoci: case {} (ratio {}, b/dp_S = {}, {})", c.name, c.ratio, c.resolution, c.schedule));
+  const std::vector<std::string> overrides{fmt::format("parameters.ratio={}", c.ratio),
+                                           fmt::format("parameters.resolution={}", c.resolution),
+                                           fmt::format("schedule.type=\"{}\"", c.schedule),
+                                           fmt::format("solids[0].gradient_correction=\"{}\"", c.gradient_correction)};
+  CsvTable frames;
+  frames.columns = {"time", "body", "x", "y", "pressure"};
+  SceneRun run = run_scene(ctx, "elastic_gate.json", overrides, [&](const LoadedScene&) {
+    RunOptions options;
+    if (snapshots) {
+      options.snapshot_interval = 0.04;
+      options.snapshot_dir = ctx.out_dir / ("case_" + c.name) / "snapshots";
+      for (int k = 1; k <= 8; ++k) options.sample_times.push_back(0.04 * k);
+      options.on_sample = [&](const Simulation& sim) {
+        const FluidParticles& f = sim.fluid().particles;
+        for (std::size_t i = 0; i < f.size(); ++i) frames.add_row({sim.time, 0.0, f.pos[i].x(), f.pos[i].y(), f.p[i]});
+        for (const SolidBody& s : sim.solids())
+          for (const Vec2& p : s.particles.pos) frames.add_row({sim.time, 1.0, p.x(), p.y(), 0.0});
+      };
+    }
+    return options;
+  });
+  GateResult out;
+  out.c = c;
+  out.diverged = run.result.divergence.has_value();
+  out.wall_s = run.result.wall_s;
+  write_observer_series(run.result.series, ctx.out_dir / ("case_" + c.name));
+  if (snapshots) frames.write(ctx.out_dir / ("case_" + c.name) / "frames.csv");
+
+  const ObserverSeries& tip = run.result.series.at(0);
+  for (std::size_t k = 0; k < tip.time.size(); ++k) {
+    out.x.t.push_back(tip.time[k]);
+    out.x.value.push_back(-1000.0 * tip.values[k][0]);  // downstream is -x in the layout
+    out.y.t.push_back(tip.time[k]);
+    out.y.value.push_back(1000.0 * tip.values[k][1]);
+  }
+  Json& m = out.metrics;
+  if (exp_x && !out.diverged)
+    if (const auto cx = compare_curves(out.x.t, out.x.value, exp_x->t, exp_x->value)) {
+      m["rms_error_x_mm"] = cx->rms_error;
+      m["max_error_x_mm"] = cx->max_error;
+      m["peak_x_mm"] = cx->peak_value;
+      m["peak_time_s"] = cx->peak_time;
+      m["experiment_points"] = cx->points;
+    }
+  if (exp_x && !out.diverged) {
+    // The loading phase (up to the experiment's frame at 0.12 s), where the gate's response is set
+    // by the water pressure and its stiffness.
+    Curve loading;
+    for (std::size_t k = 0; k < exp_x->t.size(); ++k)
+      if (exp_x->t[k] <= 0.125) { loading.t.push_back(exp_x->t[k]); loading.value.push_back(exp_x->value[k]); }
+    if (const auto cl = compare_curves(out.x.t, out.x.value, loading.t, loading.value)) m["rms_error_x_loading_mm"] = cl->rms_error;
+  }
+  if (exp_y && !out.diverged)
+    if (const auto cy = compare_curves(out.y.t, out.y.value, exp_y->t, exp_y->value)) {
+      m["rms_error_y_mm"] = cy->rms_error;
+      m["max_error_y_mm"] = cy->max_error;
+      m["peak_y_mm"] = cy->peak_value;
+    }
+  if (!m.contains("peak_x_mm") && !out.x.value.empty()) {  // without the experiment: the run's own peak
+    const auto it = std::max_element(out.x.value.begin(), out.x.value.end());
+    m["peak_x_mm"] = *it;
+    m["peak_time_s"] = out.x.t[static_cast<std::size_t>(it - out.x.value.begin())];
+  }
+
+  SuiteRun record;
+  record.case_name = c.name;
+  record.config = {{"ratio", c.ratio}, {"resolution", c.resolution}, {"schedule", c.schedule},
+                   {"gradient_correction", c.gradient_correction},
+                   {"dp_solid", run.scene.parameters.at("dp_solid")}, {"dp_fluid", run.scene.parameters.at("dp_fluid")},
+                   {"solid_damping", run.scene.parameters.at("damping")}, {"scene", "elastic_gate.json"}};
+  record.metrics = m;
+  record.cost = cost_json(run);
+  record.diverged = out.diverged;
+  record.divergence = divergence_record(run);
+  summary.add_run(std::move(record));
+  return out;
+}
+
+double metric(const GateResult& r, const char* name) {
+  return r.metrics.contains(name) ? r.metrics[name].get<double>() : NAN;
+}
+
+void write_curve(const Curve& x, const Curve& y, const std::filesystem::path& path) {
+  CsvTable t;
+  t.columns = {"time", "x_mm", "y_mm"};
+  for (std::size_t k = 0; k < x.t.size(); ++k) t.add_row({x.t[k], x.value[k], interpolate(y.t, y.value, x.t[k])});
+  t.write(path);
+}
+
+// The dry-bed dam break: the surge front against Martin & Moyce (1952) and Koshizuka & Oka (1996).
+void run_dam_break(const SuiteContext& ctx, SuiteSummary& summary) {
+  if (ctx.log) ctx.log("antoci: dry-bed dam break (free-surface sanity scene)");
+  const Json refs = read_project_reference(ctx.project_dir, "dam_break_front.json");
+  SceneRun run = run_scene(ctx, "dam_break.json", {});
+  const double a = run.scene.parameters.at("a"), g = run.scene.parameters.at("g"), dp = run.scene.parameters.at("dp");
+  const ObserverSeries& front = run.result.series.at(0);
+  CsvTable table;
+  table.columns = {"T", "Z"};
+  std::vector<double> T, Z;
+  for (std::size_t k = 0; k < front.time.size(); ++k) {
+    T.push_back(front.time[k] * std::sqrt(2.0 * g / a));
+    Z.push_back((front.values[k][0] + 0.5 * dp) / a);  // the front lies half a spacing beyond the last particle
+    table.add_row({T.back(), Z.back()});
+  }
+  table.write(ctx.out_dir / "dam_break_front.csv");
+  Json metrics = Json::object();
+  for (const char* name : {"martin_moyce_a_2_25in", "koshizuka_oka"}) {
+    const std::vector<double> rt = refs[name]["T"], rz = refs[name]["Z"];
+    std::vector<double> t_in, z_in;
+    for (std::size_t k = 0; k < rt.size(); ++k)
+      if (rt[k] <= T.back()) { t_in.push_back(rt[k]); z_in.push_back(rz[k]); }
+    if (const auto c = compare_curves(T, Z, t_in, z_in)) {
+      metrics[std::string(name) + "_rms_error"] = c->rms_error;
+      // Mean relative lead of the SPH front over the experiment.
+      double lead = 0.0;
+      for (std::size_t k = 0; k < t_in.size(); ++k) lead += interpolate(T, Z, t_in[k]) / z_in[k] - 1.0;
+      metrics[std::string(name) + "_mean_relative_lead"] = lead / t_in.size();
+    }
+  }
+  SuiteRun record;
+  record.case_name = "dam break";
+  record.config = {{"scene", "dam_break.json"}, {"resolution", run.scene.parameters.at("resolution")}};
+  record.metrics = metrics;
+  record.cost = cost_json(run);
+  record.diverged = run.result.divergence.has_value();
+  record.divergence = divergence_record(run);
+  summary.add_run(std::move(record));
+  if (record.diverged) {
+    summary.check_missing("dam break runs (free surface stays well-behaved)", "diverged", "issue 5");
+    return;
+  }
+  // An inviscid SPH front runs ahead of Martin & Moyce's: their gate took time to lift and the bed
+  // had friction (the lead of 10-20 % is common in SPH papers). A sanity bound, not a validation.
+  summary.check_range("dam-break front lead over Martin & Moyce (mean relative)",
+                      metrics.value("martin_moyce_a_2_25in_mean_relative_lead", NAN), -0.05, 0.25,
+                      "Martin & Moyce (1952), reference-data/dam_break_front.json; sanity bound for an inviscid front");
+}
+
+}  // namespace
+
+SuiteSummary run_antoci_suite(const SuiteContext& ctx) {
+  SuiteSummary summary("antoci", ctx.quick, ctx.threads);
+  std::optional<Curve> exp_x, exp_y;
+  if (ctx.reference_dir) {
+    const auto dir = *ctx.reference_dir / "antoci2007";
+    exp_x = read_reference_curve(dir / "Ex10X.txt");
+    exp_y = read_reference_curve(dir / "Ex10Y.txt");
+    if (!exp_x) summary.note_skipped("experiment comparison (x)", (dir / "Ex10X.txt").string() + " is missing");
+    if (!exp_y) summary.note_skipped("experiment comparison (y)", (dir / "Ex10Y.txt").string() + " is missing");
+    for (const char* name : {"Antoci_x.txt", "Antoci_y.txt", "YangEtAl10X.txt", "YangEtAl10Y.txt"})
+      if (const auto c = read_reference_curve(dir / name)) {
+        CsvTable t;
+        t.columns = {"time", "mm"};
+        for (std::size_t k = 0; k < c->t.size(); ++k) t.add_row({c->t[k], c->value[k]});
+        t.write(ctx.out_dir / fmt::format("reference_{}.csv", std::filesystem::path(name).stem().string()));
+      }
+    if (exp_x) {
+      CsvTable t;
+      t.columns = {"time", "x_mm", "y_mm"};
+      for (std::size_t k = 0; k < exp_x->t.size(); ++k)
+        t.add_row({exp_x->t[k], exp_x->value[k], exp_y ? interpolate(exp_y->t, exp_y->value, exp_x->t[k]) : NAN});
+      t.write(ctx.out_dir / "reference_experiment.csv");
+    }
+    // The paper's code run here (time in ms, position in mm).
+    if (const auto peer = read_numeric_table(*ctx.reference_dir / "sphinxsys" / "runs-here" / "elastic_gate_Observer_Position.dat")) {
+      CsvTable t;
+      t.columns = {"time", "x_mm", "y_mm"};
+      const double x0 = peer->columns[1].front(), y0 = peer->columns[2].front();
+      for (std::size_t k = 0; k < peer->columns[0].size(); ++k)
+        t.add_row({peer->columns[0][k] / 1000.0, x0 - peer->columns[1][k], peer->columns[2][k] - y0});
+      t.write(ctx.out_dir / "reference_sphinxsys_here.csv");
+    }
+  } else {
+    summary.note_skipped("comparison with the experiment and the peer curves",
+                         "no --reference-dir given (pass ../shared/reference-data)");
+  }
+
+  // III-B0: case III with the paper's kernel correction instead of the second-order weights: at four
+  // particles through the gate's thickness B0 is softer in bending (oscillating-plate suite), which
+  // shows how much of the agreement with the experiment the discretisation error carries.
+  std::vector<GateCase> cases;
+  const GateCase paper_weights{"III-B0", 2, 4, "multi_step_position_verlet", "first_order"};
+  if (ctx.quick) cases = {{"III", 2, 4, "multi_step_position_verlet"}, paper_weights};
+  else cases = {{"I", 1, 4, "multi_step_position_verlet"}, {"II", 1, 8, "multi_step_position_verlet"},
+                {"III", 2, 4, "multi_step_position_verlet"}, {"IV", 2, 4, "single_step_position_verlet"}, paper_weights};
+  std::map<std::string, GateResult> results;
+  for (const GateCase& c : cases) {
+    GateResult r = run_case(ctx, c, exp_x, exp_y, c.name == "III", summary);
+    write_curve(r.x, r.y, ctx.out_dir / ("case_" + c.name) / "tip_mm.csv");
+    results.emplace(c.name, std::move(r));
+  }
+
+  const GateResult& III = results.at("III");
+  const std::string issue = "issue 5 acceptance; experiment Antoci et al. 2007 (first sample subtracted)";
+  if (III.diverged) {
+    summary.check_missing("case III runs to t = 0.4 s", "diverged", issue);
+  } else if (exp_x) {
+    summary.check_near("case III peak x [mm]", metric(III, "peak_x_mm"), 46.3, 0.1 * 46.3, issue + ": peak 46.3 mm +/- 10 %");
+    if (exp_y)
+      summary.check_near("case III peak y [mm]", metric(III, "peak_y_mm"), 17.4, 0.1 * 17.4,
+                         "experiment: vertical peak 17.4 mm (first sample subtracted) +/- 10 %");
+    if (ctx.quick) {
+      // Quick mode checks the loading phase, where a linear elastic gate should follow the
+      // experiment; the closing phase depends on the rubber's behaviour beyond linear elasticity
+      // (paper section 4.2) and is judged in full mode.
+      summary.check_at_most("case III RMS error of x in the loading phase (t <= 0.125 s) [mm]",
+                            metric(III, "rms_error_x_loading_mm"), 5.0,
+                            "experiment frames at 0.04-0.12 s; tolerance as the issue's 5 mm over the whole window");
+    } else {
+      summary.check_at_most("case III RMS error of x against the experiment [mm]", metric(III, "rms_error_x_mm"), 5.0, issue);
+      summary.check_near("case III peak time [s]", metric(III, "peak_time_s"), 0.162, 0.03, issue + ": 0.162 s +/- 0.03 s");
+    }
+  }
+  if (!ctx.quick) {
+    const GateResult& IV = results.at("IV");
+    summary.check_range("speed-up of multiple over single time steps (wall IV / wall III)", IV.wall_s / III.wall_s, 1.0, 1e9,
+                        "issue 5: the paper measures 4.8");
+    if (ctx.threads == 2)
+      summary.check_at_most("case III wall time to t = 0.4 s on 2 threads [s]", III.wall_s, 6.0,
+                            "issue 5 acceptance; the paper's code takes 10-15 s here (runs-here)");
+    else
+      summary.note_skipped("case III wall-time check", "needs --threads 2 (the acceptance is stated for 2 threads)");
+  }
+  run_dam_break(ctx, summary);
+
+  const Json paper = {{"I", 80.15}, {"II", 523.17}, {"III", 27.17}, {"IV", 130.77}};
+  Json table = Json::array();
+  for (const auto& [name, r] : results)
+    table.push_back({{"case", name}, {"ratio", r.c.ratio}, {"resolution", r.c.resolution}, {"schedule", r.c.schedule},
+                     {"wall_s", r.wall_s}, {"paper_cpu_s", paper.value(name, NAN)}, {"metrics", r.metrics}});
+  summary.extra()["table"] = table;
+  if (results.count("IV")) summary.extra()["speedup_III_vs_IV"] = {{"ours", results.at("IV").wall_s / III.wall_s}, {"paper", 130.77 / 27.17}};
+  summary.extra()["experiment_peak"] = {{"x_mm", 46.3}, {"time_s", 0.162}, {"y_mm", 17.4}};
+  summary.extra()["paper_code_here"] = {{"peak_x_mm", 45.1}, {"peak_time_s", 0.135}, {"rms_error_x_mm", 4.0},
+                                        {"max_error_x_mm", 6.0}, {"wall_s", "10-15"},
+                                        {"source", "../shared/reference-data/sphinxsys/runs-here/README.md"}};
+  summary.write(ctx.out_dir);
+  render_figures(ctx, "plot_antoci.py", summary);
+  summary.write(ctx.out_dir);
+  return summary;
+}
+
+}  // namespace mrsph::verification
