@@ -11,10 +11,12 @@ summary = load_summary(directory)
 def stem(run):
     c = run["config"]
     mat = "nh" if c["material"] == "neo_hookean" else "svk"
-    return f"plate_{mat}_res{c['resolution']}_vf{c['Vf']:g}_nu{c['poisson_ratio']:g}"
+    b0 = "_b0" if c.get("gradient_correction") == "first_order" else ""
+    return f"plate_{mat}_res{c['resolution']}_vf{c['Vf']:g}_nu{c['poisson_ratio']:g}{b0}"
 
 
-linear = [r for r in summary["runs"] if r["config"]["Vf"] == 0.01 and abs(r["config"]["poisson_ratio"] - 0.3975) < 1e-9]
+linear = [r for r in summary["runs"] if r["config"]["Vf"] == 0.01 and abs(r["config"]["poisson_ratio"] - 0.3975) < 1e-9
+          and r["config"].get("gradient_correction") != "first_order"]
 fig, ax = plt.subplots(figsize=(8, 4))
 for run in linear:
     tip = read_csv(os.path.join(directory, stem(run), "tip.csv"))
@@ -50,6 +52,10 @@ for row in summary["convergence"]:
     if "extrapolated" in row:
         ax.axhline(row["extrapolated"], ls="--", lw=0.8, color="C0",
                    label=f"Richardson ({row['material'][:3]}): {row['extrapolated']:.4f} s, order {row['observed_order']:.2f}")
+b0 = [r for r in summary["runs"] if r["config"].get("gradient_correction") == "first_order"]
+if b0:
+    ax.plot([r["config"]["resolution"] for r in b0], [r["metrics"]["period"] for r in b0], "s--", color="gray",
+            label="SVK, paper's B0 weights")
 ax.axhline(summary["convergence"][0]["period_theory"], color="k", lw=1, label="Euler-Bernoulli")
 ax.set_xscale("log", base=2)
 ax.set_xlabel("H / dp")

@@ -31,6 +31,7 @@ struct PlateCase {
   double vf;
   double nu;
   double periods;
+  std::string gradient_correction = "second_order";
 };
 
 struct PlateResult {
@@ -40,11 +41,13 @@ struct PlateResult {
 };
 
 std::string case_name(const PlateCase& c) {
-  return fmt::format("{} H/dp={} Vf={:g} nu={:g}", c.material == "neo_hookean" ? "NH" : "SVK", c.resolution, c.vf, c.nu);
+  return fmt::format("{} H/dp={} Vf={:g} nu={:g}{}", c.material == "neo_hookean" ? "NH" : "SVK", c.resolution, c.vf, c.nu,
+                     c.gradient_correction == "first_order" ? " B0" : "");
 }
 
 std::string file_stem(const PlateCase& c) {
-  return fmt::format("plate_{}_res{}_vf{:g}_nu{:g}", c.material == "neo_hookean" ? "nh" : "svk", c.resolution, c.vf, c.nu);
+  return fmt::format("plate_{}_res{}_vf{:g}_nu{:g}{}", c.material == "neo_hookean" ? "nh" : "svk", c.resolution, c.vf, c.nu,
+                     c.gradient_correction == "first_order" ? "_b0" : "");
 }
 
 PlateResult run_case(const SuiteContext& ctx, const PlateCase& c, SuiteSummary& summary) {
@@ -55,7 +58,8 @@ PlateResult run_case(const SuiteContext& ctx, const PlateCase& c, SuiteSummary& 
   const std::vector<std::string> overrides{
       fmt::format("parameters.resolution={}", c.resolution), fmt::format("parameters.Vf={}", c.vf),
       fmt::format("parameters.nu={}", c.nu), fmt::format("parameters.periods={}", c.periods),
-      fmt::format("solids[0].material.model=\"{}\"", c.material)};
+      fmt::format("solids[0].material.model=\"{}\"", c.material),
+      fmt::format("solids[0].gradient_correction=\"{}\"", c.gradient_correction)};
   SceneRun run = run_scene(ctx, "oscillating_plate.json", overrides, [&](const LoadedScene& scene) {
     out.theory = 2.0 * M_PI / scene.parameters.at("omega");
     RunOptions options;
@@ -96,6 +100,7 @@ PlateResult run_case(const SuiteContext& ctx, const PlateCase& c, SuiteSummary& 
   SuiteRun record;
   record.case_name = case_name(c);
   record.config = {{"material", c.material}, {"resolution", c.resolution}, {"Vf", c.vf}, {"poisson_ratio", c.nu},
+                   {"gradient_correction", c.gradient_correction},
                    {"periods", c.periods}, {"h_over_dp", run.scene.parameters.at("h_over_dp")},
                    {"dp", run.scene.parameters.at("dp")}, {"scene", "oscillating_plate.json"}};
   record.metrics = {{"period", out.period}, {"period_theory", out.theory}, {"period_error", out.period_error},
@@ -180,6 +185,21 @@ SuiteSummary run_oscillating_plate_suite(const SuiteContext& ctx) {
                           std::abs(it->second.period / svk.period - 1.0), 0.005,
                           "both models linearise to S = lambda tr(E) I + 2 G E (paper Eqs. 10, 12-13)");
   }
+
+  // The paper's kernel correction B0 on the same ladder: the second-order weights must bend more
+  // accurately at every rung (gradient_weights.hpp).
+  const std::vector<int> b0_rungs = ctx.quick ? std::vector<int>{4, 8} : std::vector<int>{4, 8, 16};
+  Json b0_table = Json::object();
+  for (int res : b0_rungs) {
+    PlateCase c{"saint_venant_kirchhoff", res, 0.01, 0.3975, periods, "first_order"};
+    const PlateResult b0 = run_case(ctx, c, summary);
+    const PlateResult& second = by_material["saint_venant_kirchhoff"].at(res);
+    b0_table[fmt::format("period_error_res{}", res)] = b0.period_error;
+    summary.check_at_most(fmt::format("second-order weights bend more accurately than B0 at H/dp={} (|error| ratio)", res),
+                          std::abs(second.period_error) / std::abs(b0.period_error), 1.0,
+                          "the claim of gradient_weights.hpp; theory: Euler-Bernoulli period");
+  }
+  summary.extra()["paper_b0_weights"] = b0_table;
 
   // Large deflection (tip amplitude over half the length) and a nearly incompressible plate.
   const int res_extra = ctx.quick ? 8 : 16;
