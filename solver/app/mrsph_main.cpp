@@ -1,6 +1,7 @@
 // mrsph: runs any scene file. See `mrsph --help`.
 #include "io/atomic_file.hpp"
 #include "scene/scene_loader.hpp"
+#include "simulation/checkpoint.hpp"
 #include "simulation/run_summary.hpp"
 #include "simulation/runner.hpp"
 
@@ -9,6 +10,8 @@
 #include <tbb/global_control.h>
 #include <tbb/info.h>
 
+#include <atomic>
+#include <csignal>
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -19,6 +22,13 @@ namespace {
 constexpr int kExitInputError = 1;
 constexpr int kExitDiverged = 2;
 constexpr int kExitFailure = 3;
+constexpr int kExitInterrupted = 4;
+
+// Set by SIGINT/SIGTERM; the run stops at the end of the current advection step, writes a
+// checkpoint and a summary marked incomplete. (The one piece of global state: a signal handler
+// can reach nothing else.)
+std::atomic<bool> g_stop_requested{false};
+extern "C" void request_stop(int) { g_stop_requested.store(true); }
 
 void print_scene(const mrsph::LoadedScene& scene) {
   const mrsph::Simulation& sim = *scene.simulation;
@@ -56,15 +66,17 @@ int main(int argc, char** argv) {
       "Runs a JSON scene file (see verification/scenes/README.md) and writes observer CSVs, a JSON\n"
       "summary and, on request, VTP snapshots for ParaView.\n\n"
       "Exit status: 0 run completed; 1 bad input (the message names file, key and what was expected);\n"
-      "2 the simulation diverged (time, step, body and particle are reported); 3 other failure."};
+      "2 the simulation diverged (time, step, body and particle are reported; the last good state is kept);\n"
+      "3 other failure; 4 interrupted by SIGINT/SIGTERM (a checkpoint is written: continue with mrsph restart)."};
   app.require_subcommand(1);
   app.set_version_flag("--version", "mrsph 0.1.0");
 
-  std::string scene_path;
+  std::string scene_path, checkpoint_file;
   std::vector<std::string> overrides;
   std::string out_dir;
   int threads = 0;
   double snapshot_interval = -1.0, end_time = -1.0, max_particles = 2.0e7;
+  double checkpoint_every = 0.0, checkpoint_minutes = 0.0;
   bool quiet = false;
 
   auto add_scene_options = [&](CLI::App* cmd) {
@@ -75,13 +87,22 @@ int main(int argc, char** argv) {
         ->take_all();
     cmd->add_option("--max-particles", max_particles, "refuse scenes needing more particles than this (default 2e7)");
   };
+  auto add_run_options = [&](CLI::App* cmd) {
+    cmd->add_option("--out", out_dir, "output directory (default: mrsph-out/<scene name>)");
+    cmd->add_option("--threads", threads, "worker threads (default: all cores)")->check(CLI::NonNegativeNumber);
+    cmd->add_option("--snapshots", snapshot_interval, "write VTP snapshots every this much simulated time (0: none)");
+    cmd->add_option("--end-time", end_time, "stop at this time instead of the scene's end_time");
+    cmd->add_option("--checkpoint-every", checkpoint_every,
+                    "write OUT/checkpoint.bin every this much simulated time (0: only when interrupted)");
+    cmd->add_option("--checkpoint-minutes", checkpoint_minutes, "write OUT/checkpoint.bin every this many wall-clock minutes");
+    cmd->add_flag("--quiet", quiet, "no progress line");
+  };
   CLI::App* run = app.add_subcommand("run", "run a scene to its end time");
   add_scene_options(run);
-  run->add_option("--out", out_dir, "output directory (default: mrsph-out/<scene name>)");
-  run->add_option("--threads", threads, "worker threads (default: all cores)")->check(CLI::NonNegativeNumber);
-  run->add_option("--snapshots", snapshot_interval, "write VTP snapshots every this much simulated time (0: none)");
-  run->add_option("--end-time", end_time, "stop at this time instead of the scene's end_time");
-  run->add_flag("--quiet", quiet, "no progress line");
+  add_run_options(run);
+  CLI::App* restart = app.add_subcommand("restart", "continue a run from a checkpoint (same results as not stopping)");
+  restart->add_option("checkpoint", checkpoint_file, "checkpoint file written by mrsph run")->required()->check(CLI::ExistingFile);
+  add_run_options(restart);
   CLI::App* check = app.add_subcommand("check", "load a scene, validate it and print its bodies, without running");
   add_scene_options(check);
 
@@ -95,7 +116,18 @@ int main(int argc, char** argv) {
   try {
     mrsph::SceneLimits limits;
     limits.max_particles = max_particles;
-    mrsph::LoadedScene scene = mrsph::load_scene(scene_path, overrides, limits);
+    mrsph::LoadedScene scene;
+    mrsph::RunnerState resume_state;
+    const bool restarting = restart->parsed();
+    if (restarting) {
+      const mrsph::CheckpointHeader header = mrsph::read_checkpoint_header(checkpoint_file);
+      scene = mrsph::build_scene(header.scene_document, header.scene_file, limits);
+      for (const auto& spec : scene.observers)
+        resume_state.series.push_back(mrsph::ObserverSeries{spec.name, mrsph::PointObserver(spec, *scene.simulation).columns(), {}, {}});
+      mrsph::restore_checkpoint(checkpoint_file, *scene.simulation, resume_state);
+    } else {
+      scene = mrsph::load_scene(scene_path, overrides, limits);
+    }
     if (check->parsed()) {
       print_scene(scene);
       fmt::print("scene is valid\n");
@@ -105,13 +137,26 @@ int main(int argc, char** argv) {
     if (snapshot_interval >= 0.0) scene.run.snapshot_interval = snapshot_interval;
     const std::filesystem::path out = out_dir.empty() ? std::filesystem::path("mrsph-out") / scene.name : std::filesystem::path(out_dir);
     std::filesystem::create_directories(out);
-    if (!quiet) print_scene(scene);
+    if (!quiet) {
+      print_scene(scene);
+      if (restarting) fmt::print("restart    from {} at t = {:g}\n", checkpoint_file, scene.simulation->time);
+    }
 
     mrsph::RunOptions options;
     options.end_time = scene.run.end_time;
     options.observer_interval = scene.run.observer_interval;
     options.snapshot_interval = scene.run.snapshot_interval;
     options.snapshot_dir = out / "snapshots";
+    options.scene_document = &scene.document;
+    options.scene_file = scene.file;
+    options.checkpoint_path = out / "checkpoint.bin";
+    options.checkpoint_interval = checkpoint_every;
+    options.checkpoint_wall_interval_s = 60.0 * checkpoint_minutes;
+    options.last_good_path = out / "last_good.bin";
+    options.stop_requested = &g_stop_requested;
+    if (restarting) options.resume = &resume_state;
+    std::signal(SIGINT, request_stop);
+    std::signal(SIGTERM, request_stop);
     const bool terminal = ::isatty(::fileno(stderr));
     const std::size_t particles = scene.simulation->particle_count();
     if (!quiet) {
@@ -133,8 +178,14 @@ int main(int argc, char** argv) {
     mrsph::write_file_atomically(out / "summary.json", mrsph::run_summary_json(scene, result, used_threads).dump(2) + "\n");
     if (result.divergence) {
       fmt::print(stderr, "error: {}\n", mrsph::DivergenceError::describe(*result.divergence));
-      fmt::print(stderr, "the state up to the last good step is in {}\n", out.string());
+      fmt::print(stderr, "the last good state (<= 10 advection steps earlier) is in {}; outputs up to it in {}\n",
+                 result.last_good_written.string(), out.string());
       return kExitDiverged;
+    }
+    if (result.interrupted) {
+      fmt::print(stderr, "interrupted at t = {:g}: checkpoint {} (continue with: mrsph restart {})\n",
+                 result.end_time_reached, result.checkpoint_written.string(), result.checkpoint_written.string());
+      return kExitInterrupted;
     }
     if (!quiet)
       fmt::print("done: t = {:g} in {:.2f} s wall ({:.2f} s CPU), {} advection / {} acoustic / {} solid steps -> {}\n",

@@ -25,7 +25,10 @@ nlohmann::ordered_json run_summary_json(const LoadedScene& scene, const RunResul
   j["scene"] = scene.name;
   j["file"] = scene.file;
   j["completed"] = result.completed;
+  j["interrupted"] = result.interrupted;
   j["diverged"] = result.divergence.has_value();
+  if (!result.checkpoint_written.empty()) j["checkpoint"] = result.checkpoint_written.string();
+  if (!result.last_good_written.empty()) j["last_good_state"] = result.last_good_written.string();
   if (result.divergence) j["divergence"] = divergence_json(*result.divergence);
   j["end_time"] = scene.run.end_time;
   j["time_reached"] = result.end_time_reached;

@@ -3,6 +3,7 @@
 #include "io/csv_table.hpp"
 #include "io/vtp_writer.hpp"
 #include "observers/snapshot.hpp"
+#include "simulation/checkpoint.hpp"
 
 #include <fmt/format.h>
 
@@ -21,7 +22,16 @@ bool reached(Real t, Real target) { return t >= target - 1e-10 * std::max(Real(1
 
 class SnapshotWriter {
  public:
-  explicit SnapshotWriter(std::filesystem::path dir) : dir_(std::move(dir)) {}
+  // `earlier` are the times of snapshots already written (a restarted run lists them again).
+  SnapshotWriter(std::filesystem::path dir, const Simulation& sim, const std::vector<Real>& earlier) : dir_(std::move(dir)) {
+    for (const Real t : earlier) {
+      const int k = count_++;
+      if (sim.has_fluid()) list(sim.fluid().name, k, t);
+      for (const SolidBody& s : sim.solids()) list(s.name, k, t);
+      if (k == 0)
+        for (const WallBody& w : sim.walls()) list(w.name, k, t);
+    }
+  }
   void write(const Simulation& sim) {
     const int k = count_++;
     if (sim.has_fluid()) add(sim.fluid().name, k, sim.time, fluid_snapshot(sim));
@@ -32,10 +42,11 @@ class SnapshotWriter {
   }
 
  private:
+  static std::string file_name(const std::string& body, int k) { return fmt::format("{}_{:05d}.vtp", body, k); }
+  void list(const std::string& body, int k, Real t) { collections_[body].push_back(PvdEntry{t, "vtp/" + file_name(body, k)}); }
   void add(const std::string& body, int k, Real t, const PointCloud& cloud) {
-    const std::string file = fmt::format("{}_{:05d}.vtp", body, k);
-    write_vtp(dir_ / "vtp" / file, cloud);
-    collections_[body].push_back(PvdEntry{t, "vtp/" + file});
+    write_vtp(dir_ / "vtp" / file_name(body, k), cloud);
+    list(body, k, t);
   }
   std::filesystem::path dir_;
   int count_ = 0;
@@ -53,14 +64,15 @@ RunResult run_simulation(Simulation& sim, Schedule& schedule, const std::vector<
 
   std::vector<PointObserver> observers;
   RunResult result;
+  RunnerState state;
   for (const ObserverSpec& spec : observer_specs) {
     observers.emplace_back(spec, sim);
-    result.series.push_back(ObserverSeries{spec.name, observers.back().columns(), {}, {}});
+    state.series.push_back(ObserverSeries{spec.name, observers.back().columns(), {}, {}});
   }
   auto record = [&] {
     for (std::size_t k = 0; k < observers.size(); ++k) {
-      result.series[k].time.push_back(sim.time);
-      result.series[k].values.push_back(observers[k].sample(sim));
+      state.series[k].time.push_back(sim.time);
+      state.series[k].values.push_back(observers[k].sample(sim));
     }
   };
 
@@ -74,44 +86,88 @@ RunResult run_simulation(Simulation& sim, Schedule& schedule, const std::vector<
     }
   };
 
-  std::optional<SnapshotWriter> snapshots;
-  if (options.snapshot_interval > 0.0) snapshots.emplace(options.snapshot_dir);
-  Real next_observation = sim.time + options.observer_interval;
-  Real next_snapshot = sim.time + options.snapshot_interval;
-  double next_progress = options.progress_interval_s;
+  const bool checkpoints = !options.checkpoint_path.empty();
+  const bool keep_last_good = !options.last_good_path.empty();
+  if ((checkpoints || keep_last_good) && !options.scene_document)
+    throw std::invalid_argument("run_simulation: checkpoints need the scene document");
+  auto serialise = [&] { return serialise_checkpoint(*options.scene_document, options.scene_file, sim, state); };
+  auto checkpoint = [&] {
+    write_checkpoint(options.checkpoint_path, serialise());
+    result.checkpoint_written = options.checkpoint_path;
+  };
 
-  record();
-  if (snapshots) snapshots->write(sim);
-  handle_samples();
+  std::optional<SnapshotWriter> snapshots;
+  if (options.resume) {
+    state = *options.resume;
+    while (next_sample < samples.size() && samples[next_sample] <= sim.time) ++next_sample;  // already taken
+    if (options.snapshot_interval > 0.0) snapshots.emplace(options.snapshot_dir, sim, state.snapshot_times);
+  } else {
+    state.next_observation = sim.time + options.observer_interval;
+    state.next_snapshot = sim.time + options.snapshot_interval;
+    record();
+    if (options.snapshot_interval > 0.0) {
+      snapshots.emplace(options.snapshot_dir, sim, std::vector<Real>{});
+      snapshots->write(sim);
+      state.snapshot_times.push_back(sim.time);
+    }
+    handle_samples();
+  }
+  Real next_checkpoint = sim.time + options.checkpoint_interval;
+  double next_wall_checkpoint = options.checkpoint_wall_interval_s;
+  double next_progress = options.progress_interval_s;
+  std::string last_good;
+  long long steps_since_last_good = 0;
+  if (keep_last_good) last_good = serialise();
 
   try {
     while (!reached(sim.time, options.end_time)) {
       Real target = options.end_time;
-      if (options.observer_interval > 0.0) target = std::min(target, next_observation);
-      if (snapshots) target = std::min(target, next_snapshot);
+      if (options.observer_interval > 0.0) target = std::min(target, state.next_observation);
+      if (snapshots) target = std::min(target, state.next_snapshot);
       if (next_sample < samples.size()) target = std::min(target, samples[next_sample]);
       schedule.advance(sim, target - sim.time);
 
       if (options.observer_interval <= 0.0) {
         record();
-      } else if (reached(sim.time, next_observation)) {
+      } else if (reached(sim.time, state.next_observation)) {
         record();
-        while (reached(sim.time, next_observation)) next_observation += options.observer_interval;
+        while (reached(sim.time, state.next_observation)) state.next_observation += options.observer_interval;
       }
-      if (snapshots && reached(sim.time, next_snapshot)) {
+      if (snapshots && reached(sim.time, state.next_snapshot)) {
         snapshots->write(sim);
-        while (reached(sim.time, next_snapshot)) next_snapshot += options.snapshot_interval;
+        state.snapshot_times.push_back(sim.time);
+        while (reached(sim.time, state.next_snapshot)) state.next_snapshot += options.snapshot_interval;
       }
       handle_samples();
+      if (keep_last_good && ++steps_since_last_good >= options.last_good_interval) {
+        last_good = serialise();
+        steps_since_last_good = 0;
+      }
+      if (options.stop_requested && options.stop_requested->load()) {
+        if (checkpoints) checkpoint();
+        result.interrupted = true;
+        break;
+      }
+      if (checkpoints && ((options.checkpoint_interval > 0.0 && reached(sim.time, next_checkpoint)) ||
+                          (options.checkpoint_wall_interval_s > 0.0 && wall_seconds() >= next_wall_checkpoint))) {
+        checkpoint();
+        while (options.checkpoint_interval > 0.0 && reached(sim.time, next_checkpoint)) next_checkpoint += options.checkpoint_interval;
+        next_wall_checkpoint = wall_seconds() + options.checkpoint_wall_interval_s;
+      }
       if (options.on_progress && wall_seconds() >= next_progress) {
         options.on_progress(RunProgress{sim.time, options.end_time, sim.steps, wall_seconds()});
         next_progress = wall_seconds() + options.progress_interval_s;
       }
     }
-    result.completed = true;
+    result.completed = !result.interrupted;
   } catch (const DivergenceError& e) {
     result.divergence = e.info();
+    if (keep_last_good) {
+      write_checkpoint(options.last_good_path, last_good);
+      result.last_good_written = options.last_good_path;
+    }
   }
+  result.series = std::move(state.series);
   result.end_time_reached = sim.time;
   result.steps = sim.steps;
   result.wall_s = wall_seconds();

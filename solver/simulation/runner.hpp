@@ -7,6 +7,9 @@
 #include "simulation/simulation.hpp"
 #include "time/schedule.hpp"
 
+#include "scene/scene_node.hpp"
+
+#include <atomic>
 #include <filesystem>
 #include <functional>
 #include <optional>
@@ -29,6 +32,14 @@ struct ObserverSeries {
   std::vector<std::vector<Real>> values;
 };
 
+// The runner's own state, saved in checkpoints so outputs continue seamlessly after a restart.
+struct RunnerState {
+  Real next_observation = 0.0;
+  Real next_snapshot = 0.0;
+  std::vector<Real> snapshot_times;
+  std::vector<ObserverSeries> series;
+};
+
 struct RunOptions {
   Real end_time = 0.0;
   Real observer_interval = 0.0;  // 0: every advection step
@@ -38,11 +49,32 @@ struct RunOptions {
   std::function<void(const Simulation&)> on_sample;
   std::function<void(const RunProgress&)> on_progress;
   double progress_interval_s = 1.0;
+
+  // Checkpoints (checkpoint.hpp), written to checkpoint_path at the end of the first advection step
+  // after each checkpoint_interval of simulated time and each checkpoint_wall_interval_s of wall
+  // time (0: never), and when *stop_requested becomes true (the run then stops: interrupted).
+  // Checkpoints never shorten a step, so they do not change the results.
+  std::filesystem::path checkpoint_path;
+  Real checkpoint_interval = 0.0;
+  double checkpoint_wall_interval_s = 0.0;
+  const std::atomic<bool>* stop_requested = nullptr;
+  // The last good state, kept in memory every last_good_interval advection steps and written to
+  // last_good_path if the run diverges (empty: not kept).
+  std::filesystem::path last_good_path;
+  int last_good_interval = 10;
+  // The scene stored in checkpoints (required for checkpoints and the last good state).
+  const Json* scene_document = nullptr;
+  std::string scene_file;
+  // Continue a run restored from a checkpoint (restore_checkpoint filled the simulation and this).
+  const RunnerState* resume = nullptr;
 };
 
 struct RunResult {
   bool completed = false;
+  bool interrupted = false;  // stopped on request, with a checkpoint written
   std::optional<DivergenceInfo> divergence;
+  std::filesystem::path checkpoint_written;  // the latest checkpoint, if any
+  std::filesystem::path last_good_written;   // written when the run diverged, if kept
   double wall_s = 0.0;
   double cpu_s = 0.0;
   Real end_time_reached = 0.0;

@@ -91,7 +91,17 @@ void Simulation::rebuild_fluid_relations() {
   FluidParticles& f = fluid.particles;
   parallel_for_each(f.size(), [&](std::size_t i) { f.pos[i] = box_.wrap(f.pos[i]); }, kGrainSimpleLoop);
   if (rebuilds_since_sort_++ % kSortInterval == 0) f.permute(cell_order(f.pos, box_, fluid.kernel.cutoff()));
+  build_pair_lists();
+}
 
+void Simulation::restore_relations(std::size_t rebuild_count) {
+  rebuilds_since_sort_ = rebuild_count;
+  if (fluid_) build_pair_lists();
+}
+
+void Simulation::build_pair_lists() {
+  FluidBody& fluid = *fluid_;
+  FluidParticles& f = fluid.particles;
   // Cell lists of every body first, from current positions; then all pair lists.
   CellGrid fluid_grid(box_, fluid.kernel.cutoff());
   fluid_grid.build(f.pos);

@@ -79,6 +79,10 @@ class Simulation {
   // pair list (cell lists of all bodies first, then the pairs, so both sides see the same
   // positions; METHOD.md section 6 step 8).
   void rebuild_fluid_relations();
+  // After the particle state was restored from a checkpoint: rebuilds every pair list from the
+  // restored positions exactly as the interrupted run had them (no wrap, no reordering).
+  void restore_relations(std::size_t rebuild_count);
+  std::size_t rebuild_count() const { return rebuilds_since_sort_; }
   // Throws DivergenceError on NaN/Inf, runaway speed, a particle out of the domain or J <= 0.
   void check_divergence() const;
 
@@ -93,7 +97,8 @@ class Simulation {
 
   NeighborList fluid_inner_;
   std::vector<FluidContact> contacts_;
-  std::size_t rebuilds_since_sort_ = 0;
+  std::size_t rebuilds_since_sort_ = 0;  // rebuilds so far; every kSortInterval-th one reorders
+  void build_pair_lists();
 };
 
 }  // namespace mrsph

@@ -1,0 +1,157 @@
+#include "simulation/checkpoint.hpp"
+
+#include "io/atomic_file.hpp"
+#include "io/binary_stream.hpp"
+
+#include <fstream>
+#include <sstream>
+
+namespace mrsph {
+
+namespace {
+
+constexpr char kMagic[8] = {'M', 'R', 'S', 'P', 'H', 'C', 'K', '1'};
+constexpr std::uint32_t kVersion = 1;
+
+std::string read_all(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error("cannot open checkpoint " + path.string());
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+BinaryReader open_reader(const std::filesystem::path& path) {
+  BinaryReader r(read_all(path), path.string());
+  for (char c : kMagic)
+    if (r.value<char>() != c) throw std::runtime_error(path.string() + " is not an mrsph checkpoint");
+  const auto version = r.value<std::uint32_t>();
+  if (version != kVersion)
+    throw std::runtime_error(path.string() + ": checkpoint version " + std::to_string(version) + ", this program reads " +
+                             std::to_string(kVersion));
+  return r;
+}
+
+// The same order in both directions: one function per body kind, parameterised by the visitor.
+struct Saver {
+  BinaryWriter& w;
+  template <class T>
+  void operator()(const std::vector<T>& a, const char*) { w.array(a); }
+};
+struct Loader {
+  BinaryReader& r;
+  template <class T>
+  void operator()(std::vector<T>& a, const char* what) { a = r.array<T>(a.size(), what); }
+};
+
+// Particles is const for saving and mutable for loading.
+template <class Particles, class Visit>
+void visit_fluid(Particles& f, Visit&& v) {
+  v(f.pos, "fluid positions"); v(f.vel, "fluid velocities"); v(f.rho, "fluid densities"); v(f.p, "fluid pressures");
+  v(f.mass, "fluid masses"); v(f.vol, "fluid volumes"); v(f.drho_dt, "fluid density rates");
+  v(f.pressure_force, "fluid pressure forces"); v(f.dissipation_force, "fluid dissipation forces");
+  v(f.force_prior, "fluid prior forces");
+}
+
+template <class Particles, class Visit>
+void visit_solid(Particles& s, Visit&& v) {
+  v(s.pos, "solid positions"); v(s.vel, "solid velocities"); v(s.acc, "solid accelerations");
+  v(s.F, "deformation gradients"); v(s.dF_dt, "deformation rates"); v(s.stress, "stresses"); v(s.rho, "solid densities");
+  v(s.normal, "solid normals"); v(s.force_prior, "forces from the fluid"); v(s.vel_ave, "averaged velocities");
+  v(s.acc_ave, "averaged accelerations"); v(s.pos_acoustic_start, "acoustic-step start positions");
+  v(s.vel_acoustic_start, "acoustic-step start velocities");
+}
+
+}  // namespace
+
+std::string serialise_checkpoint(const Json& scene_document, const std::string& scene_file, const Simulation& sim,
+                                 const RunnerState& runner) {
+  BinaryWriter w;
+  for (char c : kMagic) w.value(c);
+  w.value(kVersion);
+  w.text(scene_document.dump());
+  w.text(scene_file);
+  w.value(sim.time);
+  w.value(sim.steps.advection);
+  w.value(sim.steps.acoustic);
+  w.value(sim.steps.solid);
+  w.value<std::uint64_t>(sim.rebuild_count());
+  w.value(runner.next_observation);
+  w.value(runner.next_snapshot);
+  w.array(runner.snapshot_times);
+  w.value<std::uint64_t>(runner.series.size());
+  for (const ObserverSeries& s : runner.series) {
+    w.text(s.name);
+    w.array(s.time);
+    std::vector<Real> flat;
+    for (const auto& row : s.values) flat.insert(flat.end(), row.begin(), row.end());
+    w.value<std::uint64_t>(s.columns.size());
+    w.array(flat);
+  }
+  Saver save{w};
+  w.value<std::uint8_t>(sim.has_fluid());
+  if (sim.has_fluid()) visit_fluid(sim.fluid().particles, save);
+  w.value<std::uint64_t>(sim.fluid_contacts().size());
+  for (const FluidContact& c : sim.fluid_contacts()) save(c.boundary_dissipation_reaction, "");
+  w.value<std::uint64_t>(sim.solids().size());
+  for (const SolidBody& solid : sim.solids()) visit_solid(solid.particles, save);
+  return w.bytes();
+}
+
+void write_checkpoint(const std::filesystem::path& path, const std::string& bytes) { write_file_atomically(path, bytes); }
+
+CheckpointHeader read_checkpoint_header(const std::filesystem::path& path) {
+  BinaryReader r = open_reader(path);
+  CheckpointHeader h;
+  try {
+    h.scene_document = Json::parse(r.text());
+  } catch (const Json::parse_error& e) {
+    throw std::runtime_error(path.string() + ": the stored scene is not valid JSON: " + e.what());
+  }
+  h.scene_file = r.text();
+  h.time = r.value<Real>();
+  return h;
+}
+
+void restore_checkpoint(const std::filesystem::path& path, Simulation& sim, RunnerState& runner) {
+  BinaryReader r = open_reader(path);
+  r.text();  // scene document
+  r.text();  // scene file
+  sim.time = r.value<Real>();
+  sim.steps.advection = r.value<long long>();
+  sim.steps.acoustic = r.value<long long>();
+  sim.steps.solid = r.value<long long>();
+  const auto rebuilds = r.value<std::uint64_t>();
+  runner.next_observation = r.value<Real>();
+  runner.next_snapshot = r.value<Real>();
+  runner.snapshot_times = r.array<Real>(BinaryReader::kAnySize, "snapshot times");
+  const auto series_count = r.value<std::uint64_t>();
+  if (series_count != runner.series.size())
+    throw std::runtime_error(path.string() + ": " + std::to_string(series_count) + " observer series, the scene has " +
+                             std::to_string(runner.series.size()));
+  for (ObserverSeries& s : runner.series) {
+    const std::string name = r.text();
+    if (name != s.name) throw std::runtime_error(path.string() + ": observer '" + name + "' where the scene has '" + s.name + "'");
+    s.time = r.array<Real>(BinaryReader::kAnySize, "observer times");
+    const auto columns = r.value<std::uint64_t>();
+    if (columns != s.columns.size()) throw std::runtime_error(path.string() + ": observer '" + name + "' has other columns");
+    const std::vector<Real> flat = r.array<Real>(s.time.size() * columns, "observer values");
+    s.values.assign(s.time.size(), std::vector<Real>(columns));
+    for (std::size_t k = 0; k < s.time.size(); ++k)
+      for (std::size_t c = 0; c < columns; ++c) s.values[k][c] = flat[k * columns + c];
+  }
+  Loader load{r};
+  const bool has_fluid = r.value<std::uint8_t>() != 0;
+  if (has_fluid != sim.has_fluid()) throw std::runtime_error(path.string() + ": fluid body mismatch with the scene");
+  if (has_fluid) visit_fluid(sim.fluid().particles, load);
+  const auto contacts = r.value<std::uint64_t>();
+  if (contacts != sim.fluid_contacts().size()) throw std::runtime_error(path.string() + ": boundary bodies differ from the scene");
+  for (FluidContact& c : sim.fluid_contacts()) load(c.boundary_dissipation_reaction, "boundary dissipation reactions");
+  const auto solids = r.value<std::uint64_t>();
+  if (solids != sim.solids().size()) throw std::runtime_error(path.string() + ": solid bodies differ from the scene");
+  for (SolidBody& solid : sim.solids()) visit_solid(solid.particles, load);
+  if (!r.at_end()) throw std::runtime_error(path.string() + ": unexpected data after the last body");
+  sim.restore_relations(rebuilds);
+}
+
+}  // namespace mrsph

@@ -1,0 +1,35 @@
+// Checkpoints: everything a run needs to continue exactly where it stopped. Taken at the end of an
+// advection step (after the pair lists were rebuilt), they hold the scene after overrides, the
+// clock, the runner's output state and every particle array the next steps read (including the
+// Riemann dissipation applied one acoustic step late and the solid's averaged kinematics). On
+// restart the pair lists are rebuilt from the restored positions without reordering, so a
+// restarted run with the same thread count is bitwise equal to an uninterrupted one.
+// Files are written atomically (temporary file, then rename).
+#pragma once
+
+#include "scene/scene_node.hpp"
+#include "simulation/runner.hpp"
+#include "simulation/simulation.hpp"
+
+#include <filesystem>
+#include <string>
+
+namespace mrsph {
+
+// In-memory form, so the runner can keep the last good state cheaply and write it on demand.
+std::string serialise_checkpoint(const Json& scene_document, const std::string& scene_file, const Simulation& sim,
+                                 const RunnerState& runner);
+void write_checkpoint(const std::filesystem::path& path, const std::string& bytes);
+
+struct CheckpointHeader {
+  Json scene_document;
+  std::string scene_file;
+  Real time = 0.0;
+};
+// Reads the scene stored in a checkpoint (to rebuild the simulation before restoring it).
+CheckpointHeader read_checkpoint_header(const std::filesystem::path& path);
+// Restores particle state, clock and runner state into a simulation built from that scene.
+// Throws std::runtime_error naming the file and what does not fit.
+void restore_checkpoint(const std::filesystem::path& path, Simulation& sim, RunnerState& runner);
+
+}  // namespace mrsph

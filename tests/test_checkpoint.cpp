@@ -1,0 +1,125 @@
+#include "simulation/checkpoint.hpp"
+#include "scene/scene_loader.hpp"
+#include "simulation/runner.hpp"
+
+#include <catch2/catch.hpp>
+#include <tbb/global_control.h>
+
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+
+using namespace mrsph;
+
+namespace {
+
+const std::filesystem::path kScene = std::filesystem::path(MRSPH_SOURCE_DIR) / "verification/scenes/turek_hron_fsi2.json";
+constexpr double kEnd = 0.8;
+
+// Every state array of the simulation, as bytes, for bitwise comparison.
+std::string state_bytes(const LoadedScene& s, const RunnerState& runner) {
+  return serialise_checkpoint(s.document, s.file, *s.simulation, runner);
+}
+
+RunOptions options_for(const LoadedScene& s) {
+  RunOptions o;
+  o.end_time = kEnd;
+  o.scene_document = &s.document;
+  o.scene_file = s.file;
+  return o;
+}
+
+RunnerState runner_state(const RunResult& r) {
+  RunnerState st;
+  st.series = r.series;
+  return st;
+}
+
+bool same_series(const std::vector<ObserverSeries>& a, const std::vector<ObserverSeries>& b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    if (a[k].time != b[k].time || a[k].values.size() != b[k].values.size()) return false;
+    for (std::size_t r = 0; r < a[k].values.size(); ++r)
+      if (std::memcmp(a[k].values[r].data(), b[k].values[r].data(), a[k].values[r].size() * sizeof(double)) != 0) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+TEST_CASE("A run restarted from a checkpoint equals the uninterrupted run bitwise", "[checkpoint]") {
+  const auto dir = std::filesystem::temp_directory_path() / "mrsph_test_checkpoint";
+  std::filesystem::create_directories(dir);
+
+  LoadedScene whole = load_scene(kScene, {});
+  const RunResult uninterrupted = run_simulation(*whole.simulation, *whole.schedule, whole.observers, options_for(whole));
+  REQUIRE(uninterrupted.completed);
+
+  // Stop at the first advection-step boundary after t = 0.4 (no step is shortened).
+  LoadedScene first = load_scene(kScene, {});
+  std::atomic<bool> stop{false};
+  RunOptions o1 = options_for(first);
+  o1.checkpoint_path = dir / "checkpoint.bin";
+  o1.stop_requested = &stop;
+  o1.progress_interval_s = 0.0;
+  o1.on_progress = [&](const RunProgress& p) { if (p.time >= 0.4) stop = true; };
+  const RunResult part = run_simulation(*first.simulation, *first.schedule, first.observers, o1);
+  REQUIRE(part.interrupted);
+  REQUIRE_FALSE(part.completed);
+  REQUIRE(std::filesystem::exists(o1.checkpoint_path));
+
+  // Restore into a freshly built scene and finish.
+  const CheckpointHeader header = read_checkpoint_header(o1.checkpoint_path);
+  LoadedScene second = build_scene(header.scene_document, header.scene_file);
+  RunnerState resume;
+  for (const auto& spec : second.observers)
+    resume.series.push_back(ObserverSeries{spec.name, PointObserver(spec, *second.simulation).columns(), {}, {}});
+  restore_checkpoint(o1.checkpoint_path, *second.simulation, resume);
+  CHECK(second.simulation->time == part.end_time_reached);
+  RunOptions o2 = options_for(second);
+  o2.resume = &resume;
+  const RunResult rest = run_simulation(*second.simulation, *second.schedule, second.observers, o2);
+  REQUIRE(rest.completed);
+
+  CHECK(rest.steps.advection == uninterrupted.steps.advection);
+  CHECK(rest.steps.solid == uninterrupted.steps.solid);
+  CHECK(same_series(rest.series, uninterrupted.series));
+  CHECK(state_bytes(second, runner_state(rest)) == state_bytes(whole, runner_state(uninterrupted)));
+  std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("A checkpoint from another scene is refused with a clear message", "[checkpoint]") {
+  const auto dir = std::filesystem::temp_directory_path() / "mrsph_test_checkpoint_mismatch";
+  std::filesystem::create_directories(dir);
+  LoadedScene s = load_scene(kScene, {});
+  RunnerState st;
+  write_checkpoint(dir / "c.bin", serialise_checkpoint(s.document, s.file, *s.simulation, st));
+  LoadedScene other = load_scene(kScene, {"parameters.ratio=1"});
+  RunnerState resume;
+  CHECK_THROWS_WITH(restore_checkpoint(dir / "c.bin", *other.simulation, resume),
+                    Catch::Contains("from another scene") || Catch::Contains("differ") || Catch::Contains("observer"));
+  std::ofstream(dir / "junk.bin") << "not a checkpoint";
+  CHECK_THROWS_WITH(read_checkpoint_header(dir / "junk.bin"), Catch::Contains("not an mrsph checkpoint"));
+  std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("The same scene gives bitwise identical results, run to run and for 1 or 2 threads", "[determinism]") {
+  std::string reference;
+  std::vector<ObserverSeries> reference_series;
+  for (int threads : {2, 2, 1}) {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+    LoadedScene s = load_scene(kScene, {});
+    RunOptions o = options_for(s);
+    o.end_time = 0.5;
+    const RunResult r = run_simulation(*s.simulation, *s.schedule, s.observers, o);
+    REQUIRE(r.completed);
+    const std::string bytes = state_bytes(s, runner_state(r));
+    if (reference.empty()) {
+      reference = bytes;
+      reference_series = r.series;
+    } else {
+      CHECK(bytes == reference);
+      CHECK(same_series(r.series, reference_series));
+    }
+  }
+}
