@@ -5,7 +5,6 @@
 
 #include <catch2/catch.hpp>
 
-#include <regex>
 #include <sstream>
 
 using namespace mrsph;
@@ -55,12 +54,19 @@ TEST_CASE("VTP snapshots are well-formed PolyData with one value per point and c
   const std::size_t n = s.simulation->fluid().particles.size();
   CHECK(doc.find("<VTKFile type=\"PolyData\"") != std::string::npos);
   CHECK(doc.find("NumberOfPoints=\"" + std::to_string(n) + "\"") != std::string::npos);
-  // Every DataArray holds points x components numbers.
-  const std::regex array(R"re(<DataArray type="(\w+)"(?: Name="(\w+)")? NumberOfComponents="(\d)" format="ascii">\n([^<]*)</DataArray>)re");
+  // Every DataArray holds points x components numbers (parsed by hand: std::regex recurses per
+  // character and overflows the stack on documents this size under AddressSanitizer).
   int arrays = 0;
-  for (auto it = std::sregex_iterator(doc.begin(), doc.end(), array); it != std::sregex_iterator(); ++it) {
-    const std::size_t components = std::stoul((*it)[3]);
-    std::istringstream values((*it)[4]);
+  std::size_t at = 0;
+  while ((at = doc.find("<DataArray", at)) != std::string::npos) {
+    const std::size_t tag_end = doc.find('>', at);
+    const std::string tag = doc.substr(at, tag_end - at);
+    const std::size_t c = tag.find("NumberOfComponents=\"");
+    const std::size_t body_end = doc.find("</DataArray>", tag_end);
+    at = body_end;
+    if (c == std::string::npos) continue;  // connectivity and offsets of the vertices
+    const std::size_t components = std::stoul(tag.substr(c + 20));
+    std::istringstream values(doc.substr(tag_end + 1, body_end - tag_end - 1));
     std::size_t count = 0;
     double x;
     while (values >> x) ++count;

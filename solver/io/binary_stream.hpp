@@ -34,7 +34,7 @@ class BinaryWriter {
   void array(const std::vector<T>& a) {
     static_assert(kRawCopyable<T>);
     value<std::uint64_t>(a.size());
-    buffer_.append(reinterpret_cast<const char*>(a.data()), a.size() * sizeof(T));
+    if (!a.empty()) buffer_.append(reinterpret_cast<const char*>(a.data()), a.size() * sizeof(T));
   }
   const std::string& bytes() const { return buffer_; }
 
@@ -78,7 +78,7 @@ class BinaryReader {
   }
   void take(char* out, std::size_t n) {
     need(n);
-    std::memcpy(out, bytes_.data() + pos_, n);
+    if (n > 0) std::memcpy(out, bytes_.data() + pos_, n);  // an empty vector's data() may be null
     pos_ += n;
   }
   std::string bytes_;

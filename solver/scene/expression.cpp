@@ -22,7 +22,8 @@ class Parser {
 
  private:
   [[noreturn]] void fail(const std::string& what) const {
-    throw ExpressionError("cannot evaluate \"" + s_ + "\": " + what + " at character " + std::to_string(pos_ + 1));
+    const std::string shown = s_.size() > 80 ? s_.substr(0, 77) + "..." : s_;
+    throw ExpressionError("cannot evaluate \"" + shown + "\": " + what + " at character " + std::to_string(pos_ + 1));
   }
   void skip_space() {
     while (pos_ < s_.size() && std::isspace(static_cast<unsigned char>(s_[pos_]))) ++pos_;
@@ -50,10 +51,19 @@ class Parser {
   }
   // Unary minus binds looser than '^', as in mathematics: -2^2 = -4, 2^-1 = 0.5.
   double unary() {
+    const DepthGuard guard(*this);
     if (accept('-')) return -unary();
     if (accept('+')) return unary();
     return power();
   }
+  // Recursion depth: an expression nested deeper than this is refused, not a stack overflow.
+  struct DepthGuard {
+    explicit DepthGuard(Parser& p) : parser(p) {
+      if (++parser.depth_ > 200) parser.fail("nesting deeper than 200 levels");
+    }
+    ~DepthGuard() { --parser.depth_; }
+    Parser& parser;
+  };
   double power() {
     const double base = primary();
     if (accept('^')) return std::pow(base, unary());  // right-associative
@@ -111,6 +121,7 @@ class Parser {
   const std::string& s_;
   const ParameterTable& parameters_;
   std::size_t pos_ = 0;
+  int depth_ = 0;
 };
 
 }  // namespace

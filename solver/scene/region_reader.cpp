@@ -4,16 +4,19 @@ namespace mrsph {
 
 namespace {
 
-ShapePtr read_region_node(const SceneNode& node);
+constexpr int kMaxRegionDepth = 32;  // combinations nested deeper are refused (no scene needs them)
 
-std::vector<ShapePtr> read_region_list(const SceneNode& parent, const std::string& key) {
+ShapePtr read_region_node(const SceneNode& node, int depth);
+
+std::vector<ShapePtr> read_region_list(const SceneNode& parent, const std::string& key, int depth) {
   std::vector<ShapePtr> out;
-  for (const SceneNode& item : parent.children(key)) out.push_back(read_region_node(item));
+  for (const SceneNode& item : parent.children(key)) out.push_back(read_region_node(item, depth + 1));
   if (out.empty()) parent.fail(key, "expected a non-empty array of regions");
   return out;
 }
 
-ShapePtr read_region_node(const SceneNode& node) {
+ShapePtr read_region_node(const SceneNode& node, int depth) {
+  if (depth > kMaxRegionDepth) node.fail("", "regions nested deeper than " + std::to_string(kMaxRegionDepth) + " levels");
   const std::vector<std::string> keys = node.keys();
   if (keys.size() != 1)
     node.fail("", "a region is an object with exactly one of the keys \"rectangle\", \"circle\", \"polygon\", "
@@ -34,12 +37,12 @@ ShapePtr read_region_node(const SceneNode& node) {
       shape = std::make_shared<Polygon>(p.vec2_list("vertices"));
       p.finish();
     } else if (kind == "union") {
-      shape = std::make_shared<Union>(read_region_list(node, kind));
+      shape = std::make_shared<Union>(read_region_list(node, kind, depth));
     } else if (kind == "intersection") {
-      shape = std::make_shared<Intersection>(read_region_list(node, kind));
+      shape = std::make_shared<Intersection>(read_region_list(node, kind, depth));
     } else if (kind == "difference") {
       const SceneNode d = node.child(kind);
-      shape = std::make_shared<Difference>(read_region(d, "base"), read_region_list(d, "subtract"));
+      shape = std::make_shared<Difference>(read_region_node(d.child("base"), depth + 1), read_region_list(d, "subtract", depth));
       d.finish();
     } else {
       node.fail(kind, "unknown region type; expected \"rectangle\", \"circle\", \"polygon\", \"union\", "
@@ -54,7 +57,7 @@ ShapePtr read_region_node(const SceneNode& node) {
 
 }  // namespace
 
-ShapePtr read_region(const SceneNode& parent, const std::string& key) { return read_region_node(parent.child(key)); }
+ShapePtr read_region(const SceneNode& parent, const std::string& key) { return read_region_node(parent.child(key), 0); }
 
 FillSpec read_fill(const SceneNode& parent, const std::string& key) {
   FillSpec fill;

@@ -282,6 +282,18 @@ LoadedScene build_scene(const Json& document, const std::string& file, const Sce
   if (!sim->has_fluid() && sim->solids().empty())
     root.fail("", "the scene has neither a fluid nor a solid body: nothing to simulate");
 
+  {  // A periodic axis must hold three kernel supports, or the cell list would see a particle twice.
+    Real reach = 0.0;
+    if (sim->has_fluid()) reach = sim->fluid().kernel.cutoff();
+    for (const auto& w : sim->walls()) reach = std::max(reach, w.kernel.cutoff());
+    for (const auto& s : sim->solids()) reach = std::max(reach, s.kernel.cutoff());
+    for (int a = 0; a < 2; ++a)
+      if (box.periodic[a] && box.length(a) < 3.0 * reach)
+        root.fail("domain", fmt::format("the periodic length along {} is {:g}, but it must be at least three kernel supports "
+                                        "(3 x {:g} = {:g}): lengthen the domain or refine the particles",
+                                        a == 0 ? "x" : "y", box.length(a), reach, 3.0 * reach));
+  }
+
   {  // Names must be unique: observers and reports refer to bodies by name.
     std::vector<std::string> names;
     if (sim->has_fluid()) names.push_back(sim->fluid().name);

@@ -5,14 +5,43 @@
 
 namespace mrsph {
 
+namespace {
+
+// Nesting deeper than this is refused before parsing: the JSON library parses and destroys
+// recursively, and no scene needs more than a few tens of levels.
+constexpr int kMaxJsonDepth = 256;
+
+void check_nesting(const std::string& text, const std::string& file) {
+  int depth = 0;
+  bool in_string = false, escaped = false;
+  for (const char c : text) {
+    if (in_string) {
+      if (escaped) escaped = false;
+      else if (c == '\\') escaped = true;
+      else if (c == '"') in_string = false;
+      continue;
+    }
+    if (c == '"') in_string = true;
+    else if (c == '[' || c == '{') {
+      if (++depth > kMaxJsonDepth)
+        throw InputError(file, "", "JSON nested deeper than " + std::to_string(kMaxJsonDepth) + " levels");
+    } else if (c == ']' || c == '}') {
+      --depth;
+    }
+  }
+}
+
+}  // namespace
+
 Json read_scene_document(const std::filesystem::path& path) {
   std::ifstream in(path);
   if (!in) throw InputError(path.string(), "", "cannot open the scene file (does it exist and is it readable?)");
   std::stringstream buffer;
   buffer << in.rdbuf();
+  check_nesting(buffer.str(), path.string());
   try {
     return Json::parse(buffer.str());
-  } catch (const Json::parse_error& e) {
+  } catch (const Json::exception& e) {  // syntax errors, and numbers out of range (1e400)
     throw InputError(path.string(), "", std::string("invalid JSON: ") + e.what());
   }
 }
