@@ -1,5 +1,6 @@
 // verify: the verification and benchmark harness. See `verify --help`.
 #include "io/atomic_file.hpp"
+#include "report/regression.hpp"
 #include "suites/suite.hpp"
 
 #include <CLI/CLI.hpp>
@@ -11,6 +12,7 @@
 #include <chrono>
 #include <ctime>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 
 #ifndef MRSPH_SOURCE_DIR
@@ -32,9 +34,17 @@ int main(int argc, char** argv) {
                "Exit status: 0 if every check passed; 1 if a check failed; 2 on bad usage or input."};
   std::vector<std::string> suites;
   bool quick = false;
-  std::string out_dir, reference_dir, project_dir = MRSPH_SOURCE_DIR;
+  std::string out_dir, reference_dir, project_dir = MRSPH_SOURCE_DIR, existing_run, baseline_file, write_baseline, rules_file;
   int threads = 0;
-  app.add_option("--suite", suites, "suite(s) to run (repeatable, or 'all')")->required();
+  app.add_option("--suite", suites, "suite(s) to run (repeatable, or 'all')");
+  app.add_option("--run", existing_run, "an existing run directory to compare with the baseline (instead of running suites)")
+      ->check(CLI::ExistingDirectory);
+  app.add_option("--compare-baseline", baseline_file,
+                 "compare the run's metrics with a baseline (reports/baseline/quick.json); writes regression.md, "
+                 "exit status 1 on a regression")->check(CLI::ExistingFile);
+  app.add_option("--write-baseline", write_baseline, "write a baseline of the run's metrics to this file (needs --rules)");
+  app.add_option("--rules", rules_file, "which metrics a new baseline watches, with tolerances (reports/baseline/rules.json)")
+      ->check(CLI::ExistingFile);
   app.add_flag("--quick", quick, "CI-sized runs (minutes) instead of the full ones");
   app.add_option("--out", out_dir, "run directory (default: reports/runs/<date-time>[-quick])");
   app.add_option("--reference-dir", reference_dir,
@@ -43,6 +53,14 @@ int main(int argc, char** argv) {
   app.add_option("--project-dir", project_dir, "the project's source tree (scenes, scripts)")->check(CLI::ExistingDirectory);
   CLI11_PARSE(app, argc, argv);
 
+  if (suites.empty() && existing_run.empty()) {
+    fmt::print(stderr, "error: give --suite NAME to run suites, or --run DIR to compare an existing run\n");
+    return 2;
+  }
+  if (!write_baseline.empty() && rules_file.empty()) {
+    fmt::print(stderr, "error: --write-baseline needs --rules (reports/baseline/rules.json)\n");
+    return 2;
+  }
   const auto& registry = mrsph::verification::registered_suites();
   std::vector<const mrsph::verification::SuiteEntry*> selected;
   for (const std::string& name : suites) {
@@ -66,7 +84,7 @@ int main(int argc, char** argv) {
   if (threads > 0) thread_limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, threads);
   const int used_threads = threads > 0 ? threads : tbb::info::default_concurrency();
 
-  fs::path run_dir = out_dir;
+  fs::path run_dir = existing_run.empty() ? fs::path(out_dir) : fs::path(existing_run);
   if (run_dir.empty()) {
     const std::time_t now = std::time(nullptr);
     run_dir = fs::path(project_dir) / "reports" / "runs" / fmt::format("{:%Y%m%d-%H%M%S}{}", fmt::localtime(now), quick ? "-quick" : "");
@@ -99,8 +117,33 @@ int main(int argc, char** argv) {
       index.push_back({{"suite", entry->name}, {"passed", false}, {"error", e.what()}});
     }
   }
-  const Json run_index = {{"mode", quick ? "quick" : "full"}, {"passed", all_passed}, {"threads", used_threads}, {"suites", index}};
-  mrsph::write_file_atomically(run_dir / "index.json", run_index.dump(2) + "\n");
-  fmt::print("verify: {} ({})\n", all_passed ? "all checks passed" : "some checks FAILED", (run_dir / "index.json").string());
+  if (!selected.empty()) {
+    const Json run_index = {{"mode", quick ? "quick" : "full"}, {"passed", all_passed}, {"threads", used_threads}, {"suites", index}};
+    mrsph::write_file_atomically(run_dir / "index.json", run_index.dump(2) + "\n");
+    fmt::print("verify: {} ({})\n", all_passed ? "all checks passed" : "some checks FAILED", (run_dir / "index.json").string());
+  }
+  try {
+    if (!write_baseline.empty()) {
+      std::ifstream rules_in(rules_file);
+      const Json baseline = mrsph::verification::make_baseline(run_dir, Json::parse(rules_in));
+      mrsph::write_file_atomically(write_baseline, baseline.dump(2) + "\n");
+      fmt::print("verify: baseline of {} written to {}\n", run_dir.string(), write_baseline);
+    }
+    if (!baseline_file.empty()) {
+      std::ifstream in(baseline_file);
+      const auto results = mrsph::verification::compare_to_baseline(Json::parse(in), run_dir);
+      const std::string report = mrsph::verification::regression_report(results);
+      mrsph::write_file_atomically(run_dir / "regression.md", "# Regression against " + baseline_file + "\n\n" + report);
+      bool regressed = false;
+      for (const auto& c : results) regressed = regressed || !c.passed;
+      fmt::print("{}", report);
+      fmt::print("verify: {} ({})\n", regressed ? "REGRESSION against the baseline" : "no regression against the baseline",
+                 (run_dir / "regression.md").string());
+      all_passed = all_passed && !regressed;
+    }
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "error: baseline: {}\n", e.what());
+    return 2;
+  }
   return all_passed ? 0 : 1;
 }
