@@ -1,5 +1,7 @@
 // verify: the verification and benchmark harness. See `verify --help`.
 #include "io/atomic_file.hpp"
+#include "report/markdown_report.hpp"
+#include "report/paper_tables.hpp"
 #include "report/regression.hpp"
 #include "suites/suite.hpp"
 
@@ -43,6 +45,10 @@ int main(int argc, char** argv) {
                  "compare the run's metrics with a baseline (reports/baseline/quick.json); writes regression.md, "
                  "exit status 1 on a regression")->check(CLI::ExistingFile);
   app.add_option("--write-baseline", write_baseline, "write a baseline of the run's metrics to this file (needs --rules)");
+  bool tables = false;
+  app.add_flag("--paper-tables", tables,
+               "print the paper's Tables 2, 3 and 5 with this run's numbers (from --run DIR or the suites just run); "
+               "also written to DIR/paper_tables.md");
   app.add_option("--rules", rules_file, "which metrics a new baseline watches, with tolerances (reports/baseline/rules.json)")
       ->check(CLI::ExistingFile);
   app.add_flag("--quick", quick, "CI-sized runs (minutes) instead of the full ones");
@@ -54,7 +60,7 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
 
   if (suites.empty() && existing_run.empty()) {
-    fmt::print(stderr, "error: give --suite NAME to run suites, or --run DIR to compare an existing run\n");
+    fmt::print(stderr, "error: give --suite NAME to run suites, or --run DIR to use an existing run\n");
     return 2;
   }
   if (!write_baseline.empty() && rules_file.empty()) {
@@ -118,11 +124,24 @@ int main(int argc, char** argv) {
     }
   }
   if (!selected.empty()) {
+    std::vector<std::string> names;
+    for (const auto* entry : selected) names.push_back(entry->name);
+    mrsph::verification::ReportContext report_context;
+    report_context.mode = quick ? "quick" : "full";
+    report_context.threads = used_threads;
+    report_context.commit = mrsph::verification::git_commit(project_dir);
+    for (int k = 0; k < argc; ++k) report_context.command_line += (k ? " " : "") + std::string(argv[k]);
+    mrsph::write_file_atomically(run_dir / "report.md", mrsph::verification::markdown_report(run_dir, names, report_context));
     const Json run_index = {{"mode", quick ? "quick" : "full"}, {"passed", all_passed}, {"threads", used_threads}, {"suites", index}};
     mrsph::write_file_atomically(run_dir / "index.json", run_index.dump(2) + "\n");
     fmt::print("verify: {} ({})\n", all_passed ? "all checks passed" : "some checks FAILED", (run_dir / "index.json").string());
   }
   try {
+    if (tables) {
+      const std::string md = mrsph::verification::paper_tables(run_dir, project_dir);
+      mrsph::write_file_atomically(run_dir / "paper_tables.md", md);
+      fmt::print("{}", md);
+    }
     if (!write_baseline.empty()) {
       std::ifstream rules_in(rules_file);
       const Json baseline = mrsph::verification::make_baseline(run_dir, Json::parse(rules_in));
