@@ -16,6 +16,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <thread>
 
 #ifndef MRSPH_SOURCE_DIR
 #define MRSPH_SOURCE_DIR "."
@@ -45,6 +46,14 @@ int main(int argc, char** argv) {
                  "compare the run's metrics with a baseline (reports/baseline/quick.json); writes regression.md, "
                  "exit status 1 on a regression")->check(CLI::ExistingFile);
   app.add_option("--write-baseline", write_baseline, "write a baseline of the run's metrics to this file (needs --rules)");
+  int jobs = 0;
+  bool emit = false, merge = false;
+  app.add_option("--jobs", jobs, "concurrent single-threaded runs in sweep suites (default: the hardware threads)")
+      ->check(CLI::NonNegativeNumber);
+  app.add_flag("--emit-commands", emit,
+               "sweep suites: write their runs as mrsph commands (DIR/<suite>/commands.txt for GNU parallel, "
+               "slurm_array.sh for a Slurm array) instead of running them");
+  app.add_flag("--merge", merge, "sweep suites: analyse runs already done by the emitted commands (in DIR/cache)");
   bool tables = false;
   app.add_flag("--paper-tables", tables,
                "print the paper's Tables 2, 3 and 5 with this run's numbers (from --run DIR or the suites just run); "
@@ -105,6 +114,9 @@ int main(int argc, char** argv) {
     if (!reference_dir.empty()) ctx.reference_dir = fs::path(reference_dir);
     ctx.project_dir = project_dir;
     ctx.threads = used_threads;
+    ctx.jobs = jobs > 0 ? jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    ctx.sweep_mode = emit ? mrsph::verification::SweepMode::Emit
+                          : merge ? mrsph::verification::SweepMode::Merge : mrsph::verification::SweepMode::Run;
     ctx.log = [](const std::string& line) { fmt::print(stderr, "  {}\n", line); };
     fs::create_directories(ctx.out_dir);
     fmt::print("== suite {} ({}) -> {}\n", entry->name, quick ? "quick" : "full", ctx.out_dir.string());

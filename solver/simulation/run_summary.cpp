@@ -40,6 +40,9 @@ nlohmann::ordered_json run_summary_json(const LoadedScene& scene, const RunResul
   for (const auto& s : result.series) files.push_back("observers/" + s.name + ".csv");
   j["observers"] = files;
   j["config"] = scene.document;
+  nlohmann::ordered_json parameters = nlohmann::ordered_json::object();
+  for (const auto& [name, value] : scene.parameters) parameters[name] = value;
+  j["parameters"] = parameters;
   return j;
 }
 

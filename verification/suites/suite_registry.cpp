@@ -1,7 +1,10 @@
 #include "suites/suite.hpp"
 #include "suites/antoci_suite.hpp"
+#include "suites/convergence_suite.hpp"
+#include "suites/speed_accuracy_suite.hpp"
 #include "suites/momentum_suite.hpp"
 #include "suites/oscillating_plate_suite.hpp"
+#include "suites/stability_suite.hpp"
 #include "suites/turek_hron_suite.hpp"
 #include "suites/womersley_suite.hpp"
 
@@ -19,6 +22,12 @@ const std::vector<SuiteEntry>& registered_suites() {
        run_turek_hron_suite},
       {"antoci", "dam break through an elastic gate vs the Antoci experiment, cases I-IV; dry-bed dam break",
        run_antoci_suite},
+      {"stability", "where each variant fails: kinematics, damping, schedules, time-step factors, Poisson ratio, ratios",
+       run_stability_suite},
+      {"convergence", "resolution ladders (plate, gate, FSI2): observed order, Richardson value, GCI; the paper's Table 3",
+       run_convergence_suite},
+      {"speed-accuracy", "wall time against error per configuration, the Pareto front, and the cheapest configuration per target",
+       run_speed_accuracy_suite},
   };
   return suites;
 }

@@ -13,6 +13,7 @@
 #include "metrics/signal_metrics.hpp"
 #include "report/reference_table.hpp"
 #include "suites/scene_run.hpp"
+#include "sweep/sweep.hpp"
 
 #include <fmt/format.h>
 
@@ -22,13 +23,6 @@
 namespace mrsph::verification {
 
 namespace {
-
-struct FsiCase {
-  std::string name;
-  int ratio;
-  int resolution;
-  std::string schedule;
-};
 
 struct FsiResult {
   FsiCase c;
@@ -49,26 +43,11 @@ const ObserverSeries& series_named(const RunResult& r, const std::string& name) 
   throw std::runtime_error("no observer series '" + name + "'");
 }
 
-FsiResult run_case(const SuiteContext& ctx, const FsiCase& c, double end_time, double settle, SuiteSummary& summary) {
-  if (ctx.log) ctx.log(fmt::format("turek-hron: case {} (ratio {}, bh/dp_S = {}, {}, t = {:g})", c.name, c.ratio,
-                                   c.resolution, c.schedule, end_time));
-  const std::vector<std::string> overrides{fmt::format("parameters.ratio={}", c.ratio),
-                                           fmt::format("parameters.resolution={}", c.resolution),
-                                           fmt::format("schedule.type=\"{}\"", c.schedule)};
-  SceneRun run = run_scene(ctx, "turek_hron_fsi2.json", overrides, [&](const LoadedScene&) {
-    RunOptions options;
-    options.end_time = end_time;
-    return options;
-  });
-  FsiResult out{c};
-  out.diverged = run.result.divergence.has_value();
-  out.wall_s = run.result.wall_s;
-  write_observer_series(run.result.series, ctx.out_dir / ("case_" + c.name));
+}  // namespace
 
-  const ObserverSeries& tip = series_named(run.result, "tip");
-  const ObserverSeries& forces = series_named(run.result, "forces");
+Json fsi2_metrics(const ObserverSeries& tip, const ObserverSeries& forces, double end_time, double settle) {
   const std::vector<double> x = column(tip, 0), y = column(tip, 1);
-  Json& m = out.metrics;
+  Json m = Json::object();
   if (const auto sy = oscillation_stats(tip.time, y, settle)) {
     m["amplitude_y"] = sy->amplitude;
     m["amplitude_y_spread"] = sy->amplitude_spread;
@@ -100,6 +79,43 @@ FsiResult run_case(const SuiteContext& ctx, const FsiCase& c, double end_time, d
   for (std::size_t k = 0; k < y.size(); ++k)
     if (tip.time[k] >= end_time - 10.0) { lo = std::min(lo, y[k]); hi = std::max(hi, y[k]); }
   m["amplitude_y_last_10"] = 0.5 * (hi - lo);
+
+  return m;
+}
+
+SweepRun fsi2_sweep_run(const FsiCase& c, double end_time) {
+  SweepRun r;
+  r.label = fmt::format("FSI2 case {} (ratio {}, bh/dp_S = {}, {})", c.name, c.ratio, c.resolution, c.schedule);
+  r.scene = "turek_hron_fsi2.json";
+  r.overrides = {fmt::format("parameters.ratio={}", c.ratio), fmt::format("parameters.resolution={}", c.resolution),
+                 fmt::format("schedule.type=\"{}\"", c.schedule)};
+  r.end_time = end_time;
+  r.config = {{"case", c.name}, {"ratio", c.ratio}, {"resolution", c.resolution}, {"schedule", c.schedule}};
+  return r;
+}
+
+namespace {
+
+FsiResult run_case(const SuiteContext& ctx, const FsiCase& c, double end_time, double settle, SuiteSummary& summary) {
+  if (ctx.log) ctx.log(fmt::format("turek-hron: case {} (ratio {}, bh/dp_S = {}, {}, t = {:g})", c.name, c.ratio,
+                                   c.resolution, c.schedule, end_time));
+  const std::vector<std::string> overrides = fsi2_sweep_run(c, end_time).overrides;
+  SceneRun run = run_scene(ctx, "turek_hron_fsi2.json", overrides, [&](const LoadedScene&) {
+    RunOptions options;
+    options.end_time = end_time;
+    return options;
+  });
+  // Shared with the sweep suites (speed-accuracy reuses the cases).
+  persist_in_cache(ctx, fsi2_sweep_run(c, end_time), run.scene, run.result);
+  FsiResult out{c};
+  out.diverged = run.result.divergence.has_value();
+  out.wall_s = run.result.wall_s;
+  write_observer_series(run.result.series, ctx.out_dir / ("case_" + c.name));
+
+  const ObserverSeries& tip = series_named(run.result, "tip");
+  const ObserverSeries& forces = series_named(run.result, "forces");
+  out.metrics = fsi2_metrics(tip, forces, end_time, settle);
+  const Json& m = out.metrics;
 
   SuiteRun record;
   record.case_name = c.name;

@@ -1,0 +1,184 @@
+// verify --suite speed-accuracy: for each benchmark, configurations (resolution, resolution ratio,
+// schedule, gradient weights) as points of wall time against error, the Pareto front (no other point
+// is both faster and more accurate), and the recommendation: the cheapest configuration that meets
+// each error target ("model no more than a scene needs").
+//   plate   error = |period / Euler-Bernoulli - 1| (a ~1 % model floor: Timoshenko effects)
+//   gate    error = RMS of the free end's x against the experiment [mm] (needs --reference-dir)
+//   FSI2    error = max(|A_y/D / 0.806 - 1|, |St / 0.20 - 1|) against Turek & Hron (full mode only;
+//           the turek-hron suite's cases are reused from the run cache)
+// Runs are single-threaded (several at a time): wall times compare configurations, not thread counts.
+#include "suites/speed_accuracy_suite.hpp"
+
+#include "io/csv_table.hpp"
+#include "metrics/signal_metrics.hpp"
+#include "report/reference_table.hpp"
+#include "suites/scene_run.hpp"
+#include "suites/turek_hron_suite.hpp"
+#include "sweep/sweep.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace mrsph::verification {
+
+namespace {
+
+struct Point {
+  std::string benchmark, label;
+  double wall_s = NAN, error = NAN;
+  bool pareto = false;
+  Json config;
+};
+
+void add(std::vector<SweepRun>& runs, std::vector<std::string>& benchmark, SweepRun run, const std::string& name) {
+  benchmark.push_back(name);
+  runs.push_back(std::move(run));
+}
+
+}  // namespace
+
+SuiteSummary run_speed_accuracy_suite(const SuiteContext& ctx) {
+  SuiteSummary summary("speed-accuracy", ctx.quick, ctx.threads);
+  std::vector<SweepRun> runs;
+  std::vector<std::string> benchmark;
+
+  for (const std::string correction : {"first_order", "second_order"})
+    for (int res : ctx.quick ? std::vector<int>{4, 8} : std::vector<int>{4, 8, 16, 32}) {
+      SweepRun r;
+      r.label = fmt::format("plate H/dp={} {}", res, correction == "first_order" ? "B0" : "2nd order");
+      r.scene = "oscillating_plate.json";
+      r.overrides = {fmt::format("parameters.resolution={}", res), "parameters.periods=3.5",
+                     fmt::format("solids[0].gradient_correction=\"{}\"", correction)};
+      r.config = {{"resolution", res}, {"gradient_correction", correction}};
+      add(runs, benchmark, r, "plate");
+    }
+
+  struct GatePoint { int res, ratio; std::string schedule; };
+  const std::vector<GatePoint> gate_points =
+      ctx.quick ? std::vector<GatePoint>{{4, 2, "multi_step_position_verlet"}, {4, 4, "multi_step_position_verlet"}}
+                : std::vector<GatePoint>{{4, 1, "multi_step_position_verlet"}, {4, 2, "multi_step_position_verlet"},
+                                         {4, 4, "multi_step_position_verlet"}, {4, 2, "single_step_position_verlet"},
+                                         {8, 1, "multi_step_position_verlet"}, {8, 2, "multi_step_position_verlet"},
+                                         {8, 4, "multi_step_position_verlet"}};
+  if (ctx.reference_dir)
+    for (const GatePoint& g : gate_points) {
+      SweepRun r;
+      r.label = fmt::format("gate b/dp_S={} ratio {} {}", g.res, g.ratio, g.schedule == "single_step_position_verlet" ? "single" : "multi");
+      r.scene = "elastic_gate.json";
+      r.overrides = {fmt::format("parameters.resolution={}", g.res), fmt::format("parameters.ratio={}", g.ratio),
+                     fmt::format("schedule.type=\"{}\"", g.schedule)};
+      r.config = {{"resolution", g.res}, {"ratio", g.ratio}, {"schedule", g.schedule}};
+      add(runs, benchmark, r, "gate");
+    }
+  else
+    summary.note_skipped("gate points", "no --reference-dir: the error against the experiment cannot be measured");
+
+  if (!ctx.quick)
+    for (const FsiCase& c : {FsiCase{"I", 1, 4, "multi_step_position_verlet"}, FsiCase{"II", 1, 8, "multi_step_position_verlet"},
+                             FsiCase{"III", 2, 4, "multi_step_position_verlet"}, FsiCase{"IV", 2, 4, "single_step_position_verlet"},
+                             FsiCase{"V", 4, 8, "multi_step_position_verlet"}, FsiCase{"III-8", 2, 8, "multi_step_position_verlet"}})
+      add(runs, benchmark, fsi2_sweep_run(c, 200.0), "FSI2");
+
+  const std::vector<SweepOutcome> outcomes = sweep(ctx, runs, summary);
+  if (outcomes.empty()) {
+    summary.write(ctx.out_dir);
+    return summary;
+  }
+
+  std::vector<double> exp_t, exp_x;
+  if (ctx.reference_dir)
+    if (const auto t = read_numeric_table(*ctx.reference_dir / "antoci2007" / "Ex10X.txt")) {
+      exp_t = t->columns[0];
+      for (double v : t->columns[1]) exp_x.push_back(1000.0 * (v - t->columns[1].front()));
+    }
+  const Json th = read_project_reference(ctx.project_dir, "turek_hron_fsi2.json")["turek_hron_2006"];
+
+  std::vector<Point> points;
+  for (std::size_t k = 0; k < outcomes.size(); ++k) {
+    const SweepOutcome& o = outcomes[k];
+    Point p{benchmark[k], o.run.label, o.cost.value("wall_s", NAN), NAN, false, o.run.config};
+    if (o.completed) {
+      if (p.benchmark == "plate") {
+        const ObserverSeries& tip = outcome_series(o, "tip");
+        if (const auto s = oscillation_stats(tip.time, series_column(tip, 1), 0.0))
+          p.error = std::abs(1.0 / s->frequency / (2.0 * M_PI / o.parameters.value("omega", NAN)) - 1.0);
+      } else if (p.benchmark == "gate" && !exp_t.empty()) {
+        const ObserverSeries& tip = outcome_series(o, "gate_tip");
+        std::vector<double> x;
+        for (double dx : series_column(tip, 0)) x.push_back(-1000.0 * dx);
+        if (const auto c = compare_curves(tip.time, x, exp_t, exp_x)) p.error = c->rms_error;
+      } else if (p.benchmark == "FSI2") {
+        const Json m = fsi2_metrics(outcome_series(o, "tip"), outcome_series(o, "forces"), 200.0, 100.0);
+        if (m.contains("amplitude_y") && m.contains("strouhal"))
+          p.error = std::max(std::abs(m["amplitude_y"].get<double>() / th["amplitude_y"].get<double>() - 1.0),
+                             std::abs(m["strouhal"].get<double>() / th["strouhal"].get<double>() - 1.0));
+      }
+    }
+    SuiteRun record;
+    record.case_name = o.run.label;
+    record.config = o.run.config;
+    record.config["benchmark"] = p.benchmark;
+    record.metrics = {{"error", p.error}};
+    record.cost = o.cost;
+    record.diverged = o.diverged;
+    record.divergence = o.divergence;
+    summary.add_run(std::move(record));
+    points.push_back(p);
+  }
+
+  // Pareto front per benchmark: sorted by time, a point is on the front if it is more accurate than
+  // every faster point.
+  const std::map<std::string, std::vector<double>> targets = {
+      {"plate", {0.1, 0.05, 0.02}}, {"gate", {8.0, 6.0, 5.0, 4.0}}, {"FSI2", {0.15, 0.10, 0.05}}};
+  Json recommendations = Json::array();
+  for (const auto& [name, levels] : targets) {
+    std::vector<Point*> mine;
+    for (Point& p : points)
+      if (p.benchmark == name && std::isfinite(p.error) && std::isfinite(p.wall_s)) mine.push_back(&p);
+    std::sort(mine.begin(), mine.end(), [](const Point* a, const Point* b) { return a->wall_s < b->wall_s; });
+    double best = INFINITY;
+    for (Point* p : mine)
+      if (p->error < best) { p->pareto = true; best = p->error; }
+    if (mine.empty()) continue;
+    for (const double target : levels) {
+      const auto it = std::find_if(mine.begin(), mine.end(), [&](const Point* p) { return p->error <= target; });
+      Json rec = {{"benchmark", name}, {"target_error", target}};
+      if (it == mine.end()) {
+        rec["configuration"] = nullptr;
+        rec["note"] = "no configuration of the sweep meets it";
+      } else {
+        rec["configuration"] = (*it)->label;
+        rec["wall_s"] = (*it)->wall_s;
+        rec["error"] = (*it)->error;
+      }
+      if (ctx.log)
+        ctx.log(fmt::format("recommendation: {} error <= {:g}: {}", name, target,
+                            it == mine.end() ? std::string("none in the sweep") : fmt::format("{} ({:.3g} s, error {:.3g})",
+                                                                                             (*it)->label, (*it)->wall_s, (*it)->error)));
+      recommendations.push_back(rec);
+    }
+  }
+  CsvTable csv;
+  csv.columns = {"benchmark", "index", "wall_s", "error", "pareto"};
+  Json table = Json::array();
+  const std::vector<std::string> names{"plate", "gate", "FSI2"};
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    const Point& p = points[k];
+    csv.add_row({double(std::find(names.begin(), names.end(), p.benchmark) - names.begin()), double(k), p.wall_s, p.error, double(p.pareto)});
+    table.push_back({{"benchmark", p.benchmark}, {"label", p.label}, {"wall_s", p.wall_s}, {"error", p.error},
+                     {"pareto", p.pareto}, {"config", p.config}});
+  }
+  csv.write(ctx.out_dir / "speed_accuracy.csv");
+  summary.extra()["points"] = table;
+  summary.extra()["recommendations"] = recommendations;
+  // No pass/fail here: against the gate experiment, coarse configurations can look better by error
+  // cancellation (see reports/antoci.md); the chart and the recommendations are the result.
+  summary.write(ctx.out_dir);
+  render_figures(ctx, "plot_speed_accuracy.py", summary);
+  summary.write(ctx.out_dir);
+  return summary;
+}
+
+}  // namespace mrsph::verification

@@ -1,0 +1,164 @@
+// verify --suite stability: sweeps that look for where each method fails. Each run is a data point
+// (completed, diverged at time t in body b for reason r, or too slow for its wall-clock budget);
+// a divergence never stops the sweep. Families:
+//   coupling    FSI2 (case III): solid kinematics averaged / averaged (code's second difference) /
+//               instantaneous x Kelvin-Voigt damping 0 / 0.05 x multi-step position Verlet /
+//               single step / multi-step velocity Verlet
+//   time steps  FSI2: acoustic CFL factor above the criterion's 0.6; gate: solid CFL factor
+//   poisson     gate: nu up to 0.499, multiple and single time steps
+//   ratio       FSI2: resolution ratio dp_F/dp_S = 1-4 at bh/dp_S = 4 and 8
+// Output: stability_map.csv (one row per run), the map as a figure, and the tables in summary.json.
+#include "suites/stability_suite.hpp"
+
+#include "io/csv_table.hpp"
+#include "sweep/sweep.hpp"
+#include "suites/scene_run.hpp"
+
+#include <fmt/format.h>
+
+namespace mrsph::verification {
+
+namespace {
+
+std::vector<SweepRun> coupling_family(bool quick) {
+  std::vector<SweepRun> runs;
+  const double end = quick ? 10.0 : 20.0;
+  const std::vector<std::string> schedules =
+      quick ? std::vector<std::string>{"multi_step_position_verlet"}
+            : std::vector<std::string>{"multi_step_position_verlet", "single_step_position_verlet", "multi_step_velocity_verlet"};
+  for (const std::string& schedule : schedules)
+    for (const std::string kinematics : {"averaged", "averaged_second_difference", "instantaneous"})
+      for (const double damping : {0.0, 0.05}) {
+        SweepRun r;
+        r.label = fmt::format("coupling: {}, {}, damping {:g}", schedule, kinematics, damping);
+        r.scene = "turek_hron_fsi2.json";
+        r.overrides = {fmt::format("schedule.type=\"{}\"", schedule), fmt::format("schedule.solid_kinematics=\"{}\"", kinematics),
+                       fmt::format("parameters.damping={}", damping)};
+        r.end_time = end;
+        r.wall_limit_s = quick ? 60.0 : 300.0;
+        r.config = {{"family", "coupling"}, {"schedule", schedule}, {"solid_kinematics", kinematics}, {"damping", damping}};
+        runs.push_back(r);
+      }
+  return runs;
+}
+
+std::vector<SweepRun> time_step_family(bool quick) {
+  std::vector<SweepRun> runs;
+  const std::vector<double> acoustic = quick ? std::vector<double>{0.6, 1.2} : std::vector<double>{0.6, 0.8, 1.0, 1.2, 1.6, 2.0};
+  for (const double cfl : acoustic) {
+    SweepRun r;
+    r.label = fmt::format("time step: FSI2 acoustic CFL {:g}", cfl);
+    r.scene = "turek_hron_fsi2.json";
+    r.overrides = {fmt::format("fluid.acoustic_cfl={}", cfl)};
+    r.end_time = quick ? 5.0 : 20.0;
+    r.wall_limit_s = 300.0;
+    r.config = {{"family", "time steps"}, {"case", "FSI2"}, {"factor", "acoustic_cfl"}, {"value", cfl}};
+    runs.push_back(r);
+  }
+  const std::vector<double> solid = quick ? std::vector<double>{0.6, 1.5} : std::vector<double>{0.6, 0.9, 1.2, 1.5, 2.0, 3.0};
+  for (const double cfl : solid) {
+    SweepRun r;
+    r.label = fmt::format("time step: gate solid CFL {:g}", cfl);
+    r.scene = "elastic_gate.json";
+    r.overrides = {fmt::format("solids[0].cfl={}", cfl)};
+    r.end_time = quick ? 0.05 : 0.2;
+    r.wall_limit_s = 300.0;
+    r.config = {{"family", "time steps"}, {"case", "gate"}, {"factor", "solid_cfl"}, {"value", cfl}};
+    runs.push_back(r);
+  }
+  return runs;
+}
+
+std::vector<SweepRun> poisson_family(bool quick) {
+  std::vector<SweepRun> runs;
+  const std::vector<double> nus = quick ? std::vector<double>{0.47, 0.499} : std::vector<double>{0.3, 0.4, 0.45, 0.47, 0.49, 0.495, 0.499};
+  for (const std::string schedule : {"multi_step_position_verlet", "single_step_position_verlet"})
+    for (const double nu : nus) {
+      if (quick && schedule == "single_step_position_verlet") continue;
+      SweepRun r;
+      r.label = fmt::format("poisson: gate nu {:g}, {}", nu, schedule);
+      r.scene = "elastic_gate.json";
+      r.overrides = {fmt::format("parameters.nu={}", nu), fmt::format("schedule.type=\"{}\"", schedule)};
+      r.end_time = quick ? 0.05 : 0.2;
+      r.wall_limit_s = quick ? 60.0 : 240.0;
+      r.config = {{"family", "poisson"}, {"poisson_ratio", nu}, {"schedule", schedule}};
+      runs.push_back(r);
+    }
+  return runs;
+}
+
+std::vector<SweepRun> ratio_family(bool quick) {
+  std::vector<SweepRun> runs;
+  const std::vector<std::pair<int, int>> pairs =
+      quick ? std::vector<std::pair<int, int>>{{4, 2}, {4, 3}}
+            : std::vector<std::pair<int, int>>{{4, 1}, {4, 2}, {4, 3}, {4, 4}, {8, 2}, {8, 3}, {8, 4}};
+  for (const auto& [res, ratio] : pairs) {
+    SweepRun r;
+    r.label = fmt::format("ratio: FSI2 bh/dp_S {} ratio {}", res, ratio);
+    r.scene = "turek_hron_fsi2.json";
+    r.overrides = {fmt::format("parameters.resolution={}", res), fmt::format("parameters.ratio={}", ratio)};
+    r.end_time = quick ? 5.0 : 20.0;
+    r.wall_limit_s = 600.0;
+    r.config = {{"family", "ratio"}, {"resolution", res}, {"ratio", ratio}};
+    runs.push_back(r);
+  }
+  return runs;
+}
+
+}  // namespace
+
+SuiteSummary run_stability_suite(const SuiteContext& ctx) {
+  SuiteSummary summary("stability", ctx.quick, ctx.threads);
+  std::vector<SweepRun> runs;
+  for (auto family : {coupling_family, time_step_family, poisson_family, ratio_family})
+    for (SweepRun& r : family(ctx.quick)) runs.push_back(std::move(r));
+  const std::vector<SweepOutcome> outcomes = sweep(ctx, runs, summary);
+  if (outcomes.empty()) {
+    summary.write(ctx.out_dir);
+    return summary;
+  }
+
+  CsvTable map;
+  map.columns = {"index", "completed", "diverged", "timed_out", "divergence_time", "wall_s"};
+  Json table = Json::array();
+  for (std::size_t k = 0; k < outcomes.size(); ++k) {
+    const SweepOutcome& o = outcomes[k];
+    const Json record = outcome_record(o);
+    const double t_div = o.diverged && o.divergence.is_object() ? o.divergence.value("time", NAN) : NAN;
+    map.add_row({double(k), double(o.completed), double(o.diverged), double(o.timed_out), t_div, o.cost.value("wall_s", NAN)});
+    Json row = {{"index", k}, {"label", o.run.label}, {"config", o.run.config}, {"end_time", o.run.end_time}};
+    row.update(record);
+    row["wall_s"] = o.cost.value("wall_s", Json());
+    table.push_back(row);
+    SuiteRun run;
+    run.case_name = o.run.label;
+    run.config = o.run.config;
+    run.metrics = record;
+    run.cost = o.cost;
+    run.diverged = o.diverged;
+    run.divergence = o.divergence;
+    summary.add_run(std::move(run));
+  }
+  map.write(ctx.out_dir / "stability_map.csv");
+  summary.extra()["map"] = table;
+
+  // The configurations the scenes ship with must be stable; everything else is mapped, not judged.
+  for (const SweepOutcome& o : outcomes) {
+    const Json& c = o.run.config;
+    const bool shipped =
+        (c["family"] == "coupling" && c["schedule"] == "multi_step_position_verlet" && c["solid_kinematics"] == "averaged" &&
+         c["damping"].get<double>() == 0.05) ||
+        (c["family"] == "time steps" && c["value"].get<double>() == 0.6) ||
+        (c["family"] == "poisson" && c["poisson_ratio"].get<double>() == 0.47 && c["schedule"] == "multi_step_position_verlet") ||
+        (c["family"] == "ratio" && c["resolution"].get<int>() == 4 && c["ratio"].get<int>() == 2);
+    if (!shipped) continue;
+    if (o.completed) summary.check_range(o.run.label + ": completes", 1.0, 1.0, 1.0, "the scenes' own configuration");
+    else summary.check_missing(o.run.label + ": completes", outcome_record(o).dump(), "the scenes' own configuration");
+  }
+  summary.write(ctx.out_dir);
+  render_figures(ctx, "plot_stability.py", summary);
+  summary.write(ctx.out_dir);
+  return summary;
+}
+
+}  // namespace mrsph::verification
