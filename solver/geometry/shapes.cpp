@@ -51,6 +51,31 @@ Real Polygon::signed_distance(const Vec2& p) const {
   return inside ? -d : d;
 }
 
+Polygon fish_outline(const Vec2& head_tip, Real length, Real thickness, const std::vector<Real>& coefficients,
+                     Real min_half_thickness, int points_per_side) {
+  auto half = [&](Real s) {
+    Real c = 0.0, power = 1.0;
+    for (std::size_t i = 0; i < coefficients.size(); ++i) {
+      power *= s / length;
+      c += coefficients[i] * thickness * power;  // a_i s^i = coefficient_i (thickness / length^i) s^i
+    }
+    return c;
+  };
+  std::vector<Vec2> upper, lower;
+  for (int k = 0; k <= points_per_side; ++k) {
+    const Real s = length * k / points_per_side;  // from the tail tip
+    const Real c = half(s);
+    if (c < min_half_thickness) continue;
+    const Real x = head_tip.x() + length - s;
+    upper.emplace_back(x, head_tip.y() + c);
+    lower.emplace_back(x, head_tip.y() - c);
+  }
+  if (upper.size() < 2) throw std::invalid_argument("fish outline: no part of the body is thicker than the minimum");
+  std::vector<Vec2> vertices(upper.begin(), upper.end());
+  vertices.insert(vertices.end(), lower.rbegin(), lower.rend());
+  return Polygon(std::move(vertices));
+}
+
 Union::Union(std::vector<ShapePtr> parts) : parts_(std::move(parts)) {
   if (parts_.empty()) throw std::invalid_argument("union: needs at least one shape");
 }

@@ -61,6 +61,13 @@ class Polygon final : public Shape {
   BoundingBox box_;
 };
 
+// The outline of the paper's fish-like body (section 4.4; CASES.md section 4): y = +/- c(s) about a
+// centre line through the head tip along +x, c(s) = sum_{i=1..5} a_i s^i with s the distance from the
+// TAIL tip and a_i = coefficient_i * thickness / length^i. Where the half-thickness is below
+// min_half_thickness the thin ends are dropped (as the paper's code does). Built as a polygon.
+Polygon fish_outline(const Vec2& head_tip, Real length, Real thickness, const std::vector<Real>& coefficients,
+                     Real min_half_thickness, int points_per_side = 200);
+
 class Union final : public Shape {
  public:
   explicit Union(std::vector<ShapePtr> parts);

@@ -20,7 +20,7 @@ ShapePtr read_region_node(const SceneNode& node, int depth) {
   const std::vector<std::string> keys = node.keys();
   if (keys.size() != 1)
     node.fail("", "a region is an object with exactly one of the keys \"rectangle\", \"circle\", \"polygon\", "
-                  "\"union\", \"intersection\", \"difference\"");
+                  "\"fish\", \"union\", \"intersection\", \"difference\"");
   const std::string& kind = keys.front();
   ShapePtr shape;
   try {
@@ -36,6 +36,20 @@ ShapePtr read_region_node(const SceneNode& node, int depth) {
       const SceneNode p = node.child(kind);
       shape = std::make_shared<Polygon>(p.vec2_list("vertices"));
       p.finish();
+    } else if (kind == "fish") {
+      const SceneNode f = node.child(kind);
+      const Vec2 head = f.vec2("head_tip");
+      const Real length = f.positive("length"), thickness = f.positive("thickness");
+      std::vector<Real> coefficients;
+      const Json& list = f.raw().contains("coefficients") ? f.raw().at("coefficients") : Json();
+      f.has("coefficients");
+      if (!list.is_array() || list.empty()) f.fail("coefficients", "expected a non-empty array of numbers");
+      for (const Json& c : list) {
+        if (!c.is_number()) f.fail("coefficients", "expected numbers, got " + describe_json(c));
+        coefficients.push_back(c.get<Real>());
+      }
+      shape = std::make_shared<Polygon>(fish_outline(head, length, thickness, coefficients, f.non_negative_or("min_half_thickness", 0.0)));
+      f.finish();
     } else if (kind == "union") {
       shape = std::make_shared<Union>(read_region_list(node, kind, depth));
     } else if (kind == "intersection") {

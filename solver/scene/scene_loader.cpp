@@ -194,8 +194,22 @@ SolidBody read_solid(const SceneNode& node, const DomainBox& box, double& budget
   solid.options.damping_coefficient = node.non_negative_or("damping", solid.options.damping_coefficient);
   solid.options.gradient_correction =
       gradient_correction_from_name(node.choice_or("gradient_correction", {"first_order", "second_order"}, "second_order"));
-  ShapePtr clamp;
+  ShapePtr clamp, rigid;
   if (node.has("clamp")) clamp = read_region(node, "clamp");
+  if (node.has("rigid")) rigid = read_region(node, "rigid");
+  struct TetherSpec { Tether tether; ShapePtr attach; std::string key; };
+  std::vector<TetherSpec> tether_specs;
+  for (const SceneNode& t : node.children("tethers")) {
+    TetherSpec spec;
+    spec.tether.anchor = t.vec2("anchor");
+    spec.tether.rest_length = t.non_negative_or("rest_length", 0.0);
+    spec.tether.stiffness = t.positive("stiffness");
+    spec.tether.damping = t.non_negative_or("damping", 0.0);
+    spec.attach = read_region(t, "attach");
+    spec.key = t.path_of("attach");
+    t.finish();
+    tether_specs.push_back(std::move(spec));
+  }
   const InitialVelocity velocity = read_initial_velocity(node);
   node.finish();
 
@@ -209,6 +223,19 @@ SolidBody read_solid(const SceneNode& node, const DomainBox& box, double& budget
     s.rho[a] = rho;
     s.constrained[a] = clamp && clamp->contains(g.pos[a]) ? 1 : 0;
     if (!s.constrained[a]) s.vel[a] = initial_velocity_at(velocity, g.pos[a]);
+  }
+  if (rigid) {
+    RigidRegion rigid_part;
+    for (std::size_t a = 0; a < g.pos.size(); ++a)
+      if (rigid->contains(g.pos[a]) && !s.constrained[a]) rigid_part.particles.push_back(static_cast<Index>(a));
+    if (rigid_part.particles.size() < 2) node.fail("rigid", "the rigid region holds fewer than two free particles of the body");
+    solid.rigid = std::move(rigid_part);
+  }
+  for (TetherSpec& spec : tether_specs) {
+    for (std::size_t a = 0; a < g.pos.size(); ++a)
+      if (spec.attach->contains(g.pos[a])) spec.tether.particles.push_back(static_cast<Index>(a));
+    if (spec.tether.particles.empty()) throw InputError(node.context().file, spec.key, "the tether attaches to no particle of the body");
+    solid.tethers.push_back(std::move(spec.tether));
   }
   return solid;
 }

@@ -9,6 +9,7 @@
 #include "solid/elastic_material.hpp"
 #include "solid/gradient_weights.hpp"
 
+#include <optional>
 #include <string>
 
 namespace mrsph {
@@ -25,6 +26,25 @@ struct SolidOptions {
   GradientCorrection gradient_correction = GradientCorrection::SecondOrder;
 };
 
+// A part of the body that moves as one rigid body: the fish's head in the paper's code. Each sub-step
+// the accelerations of its particles (elastic forces from the rest of the body, the fluid, tethers)
+// are replaced by the rigid-body motion they produce: a_i = a_c + alpha x d_i - omega^2 d_i, with
+// d_i = r_i - r_c, a_c = sum m a / M, alpha = sum d x m a / I, omega = sum d x m v / I.
+struct RigidRegion {
+  std::vector<Index> particles;
+};
+
+// A cable from a fixed anchor to some particles (pulling at their mass centre r_c), taut only when
+// stretched: x = |anchor - r_c| - L0; if x > 0 the tension is k x (1 + c dx/dt) along the cable
+// (the paper's code's tether), shared among the particles by mass.
+struct Tether {
+  Vec2 anchor = Vec2::Zero();
+  Real rest_length = 0.0;
+  Real stiffness = 0.0;
+  Real damping = 0.0;  // c, in units of time
+  std::vector<Index> particles;
+};
+
 struct SolidBody {
   std::string name;
   Real dp;
@@ -37,6 +57,9 @@ struct SolidBody {
   // Particles the sub-steps must visit: the free ones and the clamped ones with a free neighbour.
   // A clamped particle whose neighbours are all clamped keeps F = I and P = 0 for ever.
   std::vector<Index> active;
+  std::optional<RigidRegion> rigid;
+  std::vector<Tether> tethers;
+  Vec2Array external_force;  // tether forces of the current sub-step, per particle
 
   SolidBody(std::string body_name, Real spacing, Real h_over_dp, ElasticMaterial elastic)
       : name(std::move(body_name)), dp(spacing), kernel(h_over_dp * spacing), material(std::move(elastic)) {}

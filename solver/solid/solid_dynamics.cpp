@@ -63,6 +63,7 @@ void initialise_solid(SolidBody& solid) {
   });
   s.normal0 = normals_from_kernel_gradient(s.vol0, solid.inner);
   s.normal = s.normal0;
+  solid.external_force.assign(s.size(), Vec2::Zero());
   solid.active.clear();
   for (std::size_t a = 0; a < s.size(); ++a) {
     bool needed = !s.constrained[a];
@@ -131,9 +132,75 @@ void half_step(SolidBody& solid, Real h, Real eta) {
   });
 }
 
-// v += dt a with a = (f + F^prior)/m + g; r += dt/2 v. Returns the criterion's rate.
+// Tether forces of the current state into solid.external_force.
+void apply_tethers(SolidBody& solid) {
+  SolidParticles& s = solid.particles;
+  for (const Tether& t : solid.tethers) {
+    const Vec2 force = tether_force(solid, t);
+    Real mass = 0.0;
+    for (Index a : t.particles) mass += s.mass[a];
+    for (Index a : t.particles) solid.external_force[a] += force * (s.mass[a] / mass);
+  }
+}
+
+// Replaces the accelerations of the rigid region's particles by the rigid-body motion they produce
+// (linear and angular momentum of the region unchanged).
+void project_rigid(SolidBody& solid) {
+  SolidParticles& s = solid.particles;
+  const std::vector<Index>& part = solid.rigid->particles;
+  Real M = 0.0;
+  Vec2 centre = Vec2::Zero(), velocity = Vec2::Zero(), force = Vec2::Zero();
+  for (Index a : part) {
+    M += s.mass[a];
+    centre += s.mass[a] * s.pos[a];
+    velocity += s.mass[a] * s.vel[a];
+    force += s.mass[a] * s.acc[a];
+  }
+  centre /= M;
+  Real inertia = 0.0, torque = 0.0, spin = 0.0;
+  for (Index a : part) {
+    const Vec2 d = s.pos[a] - centre;
+    inertia += s.mass[a] * d.squaredNorm();
+    torque += s.mass[a] * (d.x() * s.acc[a].y() - d.y() * s.acc[a].x());
+    spin += s.mass[a] * (d.x() * s.vel[a].y() - d.y() * s.vel[a].x());
+  }
+  const Vec2 a_c = force / M;
+  const Real alpha = inertia > 0.0 ? torque / inertia : 0.0;
+  const Real omega = inertia > 0.0 ? spin / inertia : 0.0;
+  for (Index a : part) {
+    const Vec2 d = s.pos[a] - centre;
+    s.acc[a] = a_c + alpha * Vec2(-d.y(), d.x()) - omega * omega * d;
+  }
+}
+
+// v += dt a with a = (f + F^prior + tethers)/m + g; r += dt/2 v. Returns the criterion's rate.
 Real momentum_pass(SolidBody& solid, Real dt, const Vec2& g) {
   SolidParticles& s = solid.particles;
+  if (solid.rigid || !solid.tethers.empty()) {
+    // Accelerations first, then the constraints (they need all of them), then the update.
+    std::fill(solid.external_force.begin(), solid.external_force.end(), Vec2::Zero());
+    apply_tethers(solid);
+    parallel_for_each(solid.active.size(), [&](std::size_t k) {
+      const Index a = solid.active[k];
+      if (s.constrained[a]) {
+        s.acc[a].setZero();
+        return;
+      }
+      s.acc[a] = (internal_force(solid, a) + s.force_prior[a] + solid.external_force[a]) / s.mass[a] + g;
+    });
+    if (solid.rigid) project_rigid(solid);
+    return parallel_max(solid.active.size(), [&](std::size_t k) {
+      const Index a = solid.active[k];
+      if (s.constrained[a]) {
+        s.vel[a].setZero();
+        s.pos[a] = s.pos0[a];
+        return 0.0;
+      }
+      s.vel[a] += dt * s.acc[a];
+      s.pos[a] += 0.5 * dt * s.vel[a];
+      return particle_rate(solid, a);
+    }, 0.0);
+  }
   return parallel_max(solid.active.size(), [&](std::size_t k) {
     const Index a = solid.active[k];
     if (s.constrained[a]) {
@@ -207,6 +274,27 @@ void solid_substep_velocity_verlet(SolidBody& solid, Real dt, const Vec2& body_a
     s.acc[a] = (internal_force(solid, a) + s.force_prior[a]) / s.mass[a] + body_acceleration;
     s.vel[a] += 0.5 * dt * s.acc[a];
   });
+}
+
+Vec2 tether_force(const SolidBody& solid, const Tether& t) {
+  const SolidParticles& s = solid.particles;
+  Real mass = 0.0;
+  Vec2 centre = Vec2::Zero(), velocity = Vec2::Zero();
+  for (Index a : t.particles) {
+    mass += s.mass[a];
+    centre += s.mass[a] * s.pos[a];
+    velocity += s.mass[a] * s.vel[a];
+  }
+  centre /= mass;
+  velocity /= mass;
+  const Vec2 to_anchor = t.anchor - centre;
+  const Real length = to_anchor.norm();
+  const Real stretch = length - t.rest_length;
+  if (stretch <= 0.0 || length == 0.0) return Vec2::Zero();
+  const Vec2 direction = to_anchor / length;
+  const Real stretch_rate = -velocity.dot(direction);  // d|anchor - r_c|/dt
+  const Real tension = std::max(Real(0), t.stiffness * stretch * (1.0 + t.damping * stretch_rate));
+  return tension * direction;
 }
 
 void update_solid_normals(SolidBody& solid) {

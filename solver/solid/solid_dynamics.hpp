@@ -42,6 +42,9 @@ Vec2 internal_force(const SolidBody& solid, std::size_t a);
 // v += dt/2 a; r += dt v; F += dt dF/dt(v); a = (f + F^prior)/m + g; v += dt/2 a.
 void solid_substep_velocity_verlet(SolidBody& solid, Real dt, const Vec2& body_acceleration);
 
+// Tension of a tether and its direction (zero when slack), for the current state.
+Vec2 tether_force(const SolidBody& solid, const Tether& tether);
+
 // Current normals n = R(F) n0, with R the rotation part of F (METHOD.md section 3).
 void update_solid_normals(SolidBody& solid);
 

@@ -134,6 +134,7 @@ SuiteSummary run_stability_suite(const SuiteContext& ctx) {
     run.case_name = o.run.label;
     run.config = o.run.config;
     run.metrics = record;
+    run.metrics["completed_flag"] = o.completed ? 1.0 : 0.0;  // numeric, for the regression baseline
     run.cost = o.cost;
     run.diverged = o.diverged;
     run.divergence = o.divergence;
