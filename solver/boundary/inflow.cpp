@@ -21,7 +21,7 @@ Vec2 ParabolicInflowProfile::velocity(const Vec2& p, Real t) const {
 void InflowBuffer::apply(FluidParticles& fluid, Real t, const DomainBox& box) const {
   parallel_for_each(fluid.size(), [&](std::size_t i) {
     const Vec2 p = box.wrap(fluid.pos[i]);
-    if (region->contains(p)) fluid.vel[i] = profile.velocity(p, t);
+    if (region->contains(p)) fluid.vel[i] = std::visit([&](const auto& prof) { return prof.velocity(p, t); }, profile);
   }, kGrainSimpleLoop);
 }
 

@@ -1,16 +1,20 @@
 // Inflow buffer (METHOD.md section 7): in a periodic channel, the fluid particles inside the
 // buffer region have their velocity reset to a prescribed profile u(y, t) after every acoustic
 // step; density and pressure are left alone.
+//   Womersley (pulsatile; the plane-channel solution of womersley_profile.hpp, CASES.md section 3):
+//     u_x = u_W(y, t), u_y = 0
 //   parabolic channel (Turek & Hron 2006, with the factor 4 the paper drops, CASES.md section 1):
 //     u_x = 1.5 Ubar(t) 4 (y - y0)(H - (y - y0)) / H^2,
 //     Ubar(t) = U0 (1 - cos(pi t / t_ramp)) / 2 for t < t_ramp, else U0;  u_y = 0.
 #pragma once
 
+#include "boundary/womersley_profile.hpp"
 #include "geometry/shapes.hpp"
 #include "neighbor/domain_box.hpp"
 #include "particles/fluid_particles.hpp"
 
 #include <memory>
+#include <variant>
 
 namespace mrsph {
 
@@ -24,9 +28,16 @@ struct ParabolicInflowProfile {
   Vec2 velocity(const Vec2& p, Real t) const;
 };
 
+struct WomersleyInflowProfile {
+  WomersleyProfile profile;
+  Vec2 velocity(const Vec2& p, Real t) const { return Vec2(profile.velocity(p.y(), t), 0.0); }
+};
+
+using InflowProfile = std::variant<ParabolicInflowProfile, WomersleyInflowProfile>;
+
 struct InflowBuffer {
   ShapePtr region;
-  ParabolicInflowProfile profile;
+  InflowProfile profile;
 
   // Positions are tested in their periodic image inside the box.
   void apply(FluidParticles& fluid, Real t, const DomainBox& box) const;

@@ -14,14 +14,22 @@ bool keep(const Shape& region, const Vec2& p, Real margin) {
 GeneratedParticles fill_lattice(const Shape& region, Real dp, const FillSpec& fill) {
   const BoundingBox box = region.bounds();
   const Vec2 origin = fill.lattice_origin.value_or(box.lower);
-  const int i0 = static_cast<int>(std::floor((box.lower.x() - origin.x()) / dp)) - 1;
-  const int i1 = static_cast<int>(std::ceil((box.upper.x() - origin.x()) / dp)) + 1;
-  const int j0 = static_cast<int>(std::floor((box.lower.y() - origin.y()) / dp)) - 1;
-  const int j1 = static_cast<int>(std::ceil((box.upper.y() - origin.y()) / dp)) + 1;
+  const Real c = std::cos(fill.lattice_angle), s = std::sin(fill.lattice_angle);
+  // The region's bounding box in lattice coordinates bounds the indices to visit.
+  Vec2 lo = Vec2::Constant(INFINITY), hi = Vec2::Constant(-INFINITY);
+  for (const Vec2& corner : {box.lower, box.upper, Vec2(box.lower.x(), box.upper.y()), Vec2(box.upper.x(), box.lower.y())}) {
+    const Vec2 d = corner - origin;
+    const Vec2 local(c * d.x() + s * d.y(), -s * d.x() + c * d.y());
+    lo = lo.cwiseMin(local);
+    hi = hi.cwiseMax(local);
+  }
+  const int i0 = static_cast<int>(std::floor(lo.x() / dp)) - 1, i1 = static_cast<int>(std::ceil(hi.x() / dp)) + 1;
+  const int j0 = static_cast<int>(std::floor(lo.y() / dp)) - 1, j1 = static_cast<int>(std::ceil(hi.y() / dp)) + 1;
   GeneratedParticles out;
   for (int j = j0; j <= j1; ++j)
     for (int i = i0; i <= i1; ++i) {
-      const Vec2 p = origin + Vec2(i + 0.5, j + 0.5) * dp;
+      const Vec2 local = Vec2(i + 0.5, j + 0.5) * dp;
+      const Vec2 p = origin + Vec2(c * local.x() - s * local.y(), s * local.x() + c * local.y());
       if (!keep(region, p, fill.clearance * dp)) continue;
       out.pos.push_back(p);
       out.vol.push_back(dp * dp);

@@ -1,6 +1,7 @@
 // Fills a region with particles.
-//   lattice: a square lattice of spacing dp, points origin + (i + 1/2, j + 1/2) dp, origin = the
-//            region's lower bounding corner unless given;
+//   lattice: a square lattice of spacing dp, points origin + R(angle) (i + 1/2, j + 1/2) dp,
+//            origin = the region's lower bounding corner unless given, angle 0 unless given (a
+//            rotated lattice follows an inclined body: straight rows, no staircase);
 //   rings:   concentric rings about a centre with radial spacing R / round(R / dp) and about dp
 //            along each ring: a smooth circular surface (used for the cylinder).
 // A point is kept if it lies at least `clearance` * dp inside the region's boundary, so a lattice
@@ -19,6 +20,7 @@ enum class FillPattern { Lattice, Rings };
 struct FillSpec {
   FillPattern pattern = FillPattern::Lattice;
   std::optional<Vec2> lattice_origin;
+  Real lattice_angle = 0.0;  // radians
   Vec2 ring_center = Vec2::Zero();
   Real ring_radius = 0.0;
   Real clearance = 0.5;  // in units of dp

@@ -80,6 +80,7 @@ FillSpec read_fill(const SceneNode& parent, const std::string& key) {
   const std::string pattern = node->choice_or("pattern", {"lattice", "rings"}, "lattice");
   fill.pattern = pattern == "rings" ? FillPattern::Rings : FillPattern::Lattice;
   if (node->has("origin")) fill.lattice_origin = node->vec2("origin");
+  fill.lattice_angle = node->number_or("angle_degrees", 0.0) * kPi / 180.0;
   if (fill.pattern == FillPattern::Rings) {
     fill.ring_center = node->vec2("center");
     fill.ring_radius = node->positive("radius");

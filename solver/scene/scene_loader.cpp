@@ -349,11 +349,23 @@ LoadedScene build_scene(const Json& document, const std::string& file, const Sce
     InflowBuffer inflow;
     inflow.region = read_region(*node, "buffer");
     const SceneNode profile = node->child("profile");
-    profile.choice("type", {"parabolic_channel"});
-    inflow.profile.channel_bottom = profile.number_or("bottom", 0.0);
-    inflow.profile.channel_height = profile.positive("height");
-    inflow.profile.mean_velocity = profile.number("mean_velocity");
-    inflow.profile.ramp_time = profile.non_negative_or("ramp_time", 0.0);
+    if (profile.choice("type", {"parabolic_channel", "womersley"}) == "parabolic_channel") {
+      ParabolicInflowProfile p;
+      p.channel_bottom = profile.number_or("bottom", 0.0);
+      p.channel_height = profile.positive("height");
+      p.mean_velocity = profile.number("mean_velocity");
+      p.ramp_time = profile.non_negative_or("ramp_time", 0.0);
+      inflow.profile = p;
+    } else {
+      WomersleyInflowProfile w;
+      w.profile.channel_bottom = profile.number_or("bottom", 0.0);
+      w.profile.channel_height = profile.positive("height");
+      w.profile.pressure_gradient_amplitude = profile.number("pressure_gradient_amplitude");
+      w.profile.angular_frequency = profile.positive("angular_frequency");
+      w.profile.density = profile.positive("density");
+      w.profile.kinematic_viscosity = profile.positive("kinematic_viscosity");
+      inflow.profile = w;
+    }
     profile.finish();
     node->finish();
     sim->inflow = std::move(inflow);

@@ -1,11 +1,13 @@
 #include "suites/suite.hpp"
 #include "suites/antoci_suite.hpp"
 #include "suites/convergence_suite.hpp"
+#include "suites/fish_suite.hpp"
 #include "suites/speed_accuracy_suite.hpp"
 #include "suites/momentum_suite.hpp"
 #include "suites/oscillating_plate_suite.hpp"
 #include "suites/stability_suite.hpp"
 #include "suites/turek_hron_suite.hpp"
+#include "suites/valve_suite.hpp"
 #include "suites/womersley_suite.hpp"
 
 namespace mrsph::verification {
@@ -28,6 +30,10 @@ const std::vector<SuiteEntry>& registered_suites() {
        run_convergence_suite},
       {"speed-accuracy", "wall time against error per configuration, the Pareto front, and the cheapest configuration per target",
        run_speed_accuracy_suite},
+      {"valve", "venous valve leaflets in pulsatile Womersley flow, Wo = 1, 5, 10: period and amplitude of the leaflets",
+       run_valve_suite},
+      {"fish", "passively flapping tethered fish-like body: flapping frequency, amplitudes, Lissajous ratio, travelling wave",
+       run_fish_suite},
   };
   return suites;
 }

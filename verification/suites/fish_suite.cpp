@@ -1,0 +1,181 @@
+// verify --suite fish: passive flapping of a flexible fish-like body tethered at its head (paper
+// section 4.4). The paper's statements, checked within 15 %: sustained flapping after t = 20, tail
+// frequency about 0.74, vertical amplitudes about 0.3 (head) and 0.58 (tail, absolute: the paper's
+// percentages do not match bh = 0.4), a tail Lissajous ratio about 2.25 : 1 (x to y frequency), and
+// a travelling wave along the centre line (the phase of the vertical motion grows from head to tail).
+// Full: E = 200 (the paper's code) and E* = 500 (the paper's text) to t = 200. Quick: E = 200 to
+// t = 30: stability, the symmetric start, the tether.
+#include "suites/fish_suite.hpp"
+
+#include "io/csv_table.hpp"
+#include "metrics/signal_metrics.hpp"
+#include "suites/scene_run.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <map>
+
+namespace mrsph::verification {
+
+namespace {
+
+struct FishResult {
+  double youngs_modulus;
+  bool diverged = false;
+  Json metrics = Json::object();
+};
+
+const ObserverSeries& series(const RunResult& r, const std::string& name) {
+  for (const auto& s : r.series)
+    if (s.name == name) return s;
+  throw std::runtime_error("no observer " + name);
+}
+
+std::vector<double> column(const ObserverSeries& s, std::size_t c) {
+  std::vector<double> out;
+  for (const auto& row : s.values) out.push_back(row[c]);
+  return out;
+}
+
+FishResult run_case(const SuiteContext& ctx, double E, double end_time, SuiteSummary& summary) {
+  if (ctx.log) ctx.log(fmt::format("fish: E = {:g} to t = {:g}", E, end_time));
+  FishResult out{E};
+  // Centre-line particles (the row just above the centre line) over the last 5 time units.
+  CsvTable centre;
+  centre.columns = {"time", "x0", "x", "y"};
+  const double window = 5.0, head_y = 4.0;
+  SceneRun run = run_scene(ctx, "tethered_fish.json", {fmt::format("parameters.E={}", E)}, [&](const LoadedScene& scene) {
+    RunOptions options;
+    options.end_time = end_time;
+    for (double t = std::max(0.0, end_time - window); t <= end_time + 1e-9; t += 0.05) options.sample_times.push_back(t);
+    const double dp = scene.parameters.at("dp_solid");
+    options.on_sample = [&, dp](const Simulation& sim) {
+      const SolidParticles& s = sim.solids()[0].particles;
+      for (std::size_t a = 0; a < s.size(); ++a)
+        if (std::abs(s.pos0[a].y() - (head_y + 0.5 * dp)) < 1e-9) centre.add_row({sim.time, s.pos0[a].x(), s.pos[a].x(), s.pos[a].y()});
+    };
+    return options;
+  });
+  out.diverged = run.result.divergence.has_value();
+  const std::string dir = fmt::format("E{:g}", E);
+  write_observer_series(run.result.series, ctx.out_dir / dir);
+  centre.write(ctx.out_dir / dir / "centre_line.csv");
+
+  Json& m = out.metrics;
+  const double settle = 20.0;
+  const ObserverSeries& head = series(run.result, "head");
+  const ObserverSeries& tail = series(run.result, "tail");
+  const ObserverSeries& forces = series(run.result, "forces");
+  if (const auto h = oscillation_stats(head.time, column(head, 1), settle)) {
+    m["head_amplitude_y"] = h->amplitude;
+    m["head_mean_y"] = h->mean;
+    m["head_frequency"] = h->frequency;
+  }
+  if (const auto ty = oscillation_stats(tail.time, column(tail, 1), settle)) {
+    m["tail_amplitude_y"] = ty->amplitude;
+    m["tail_mean_y"] = ty->mean;
+    m["tail_frequency"] = ty->frequency;
+    m["tail_cycles"] = ty->cycles;
+    if (const auto f = spectral_peak_frequency(tail.time, column(tail, 1), settle, 0.01, 3.0)) m["tail_frequency_spectral"] = *f;
+    if (const auto tx = oscillation_stats(tail.time, column(tail, 0), settle)) m["tail_lissajous_ratio"] = tx->frequency / ty->frequency;
+  }
+  // Sustained flapping: half peak-to-peak of the tail over the last fifth of the run.
+  {
+    const std::vector<double> y = column(tail, 1);
+    double lo = INFINITY, hi = -INFINITY;
+    for (std::size_t k = 0; k < y.size(); ++k)
+      if (tail.time[k] >= 0.8 * end_time) { lo = std::min(lo, y[k]); hi = std::max(hi, y[k]); }
+    m["tail_amplitude_last_fifth"] = 0.5 * (hi - lo);
+  }
+  // Symmetric start: the lift stays at round-off until the instability breaks the symmetry.
+  {
+    double largest = 0.0;
+    for (std::size_t k = 0; k < forces.time.size() && forces.time[k] < 1.0; ++k) largest = std::max(largest, std::abs(forces.values[k][1]));
+    m["lift_before_t1"] = largest;
+  }
+  // Travelling wave: phase of each centre-line particle's y at the tail frequency over the window.
+  if (m.contains("tail_frequency") && !centre.rows.empty()) {
+    const double w = 2.0 * M_PI * m["tail_frequency"].get<double>();
+    std::map<double, std::pair<double, double>> projection;  // x0 -> (sum y cos, sum y sin)
+    std::map<double, double> mean;
+    std::map<double, int> count;
+    for (const auto& row : centre.rows) { mean[row[1]] += row[3]; ++count[row[1]]; }
+    for (auto& [x0, s] : mean) s /= count[x0];
+    for (const auto& row : centre.rows) {
+      auto& p = projection[row[1]];
+      p.first += (row[3] - mean[row[1]]) * std::cos(w * row[0]);
+      p.second += (row[3] - mean[row[1]]) * std::sin(w * row[0]);
+    }
+    std::vector<double> x0s, phases;
+    double previous = NAN, unwrap = 0.0;
+    for (const auto& [x0, p] : projection) {
+      double phase = std::atan2(p.second, p.first);
+      if (std::isfinite(previous)) {
+        while (phase + unwrap - previous > M_PI) unwrap -= 2.0 * M_PI;
+        while (phase + unwrap - previous < -M_PI) unwrap += 2.0 * M_PI;
+      }
+      phase += unwrap;
+      previous = phase;
+      x0s.push_back(x0);
+      phases.push_back(phase);
+    }
+    if (x0s.size() > 2) {
+      // Least-squares slope of phase against position: the wave number along the body.
+      double sx = 0, sp = 0, sxx = 0, sxp = 0;
+      const double n = x0s.size();
+      for (std::size_t k = 0; k < x0s.size(); ++k) { sx += x0s[k]; sp += phases[k]; sxx += x0s[k] * x0s[k]; sxp += x0s[k] * phases[k]; }
+      m["centre_line_phase_slope"] = (n * sxp - sx * sp) / (n * sxx - sx * sx);
+      m["centre_line_phase_range"] = phases.back() - phases.front();
+    }
+  }
+  SuiteRun record;
+  record.case_name = fmt::format("E={:g}", E);
+  record.config = {{"youngs_modulus", E}, {"end_time", end_time}, {"scene", "tethered_fish.json"},
+                   {"solid_damping", run.scene.parameters.at("damping")}};
+  record.metrics = m;
+  record.cost = cost_json(run);
+  record.diverged = out.diverged;
+  record.divergence = divergence_record(run);
+  summary.add_run(std::move(record));
+  return out;
+}
+
+}  // namespace
+
+SuiteSummary run_fish_suite(const SuiteContext& ctx) {
+  SuiteSummary summary("fish", ctx.quick, ctx.threads);
+  const double end_time = ctx.quick ? 30.0 : 200.0;
+  const std::vector<double> moduli = ctx.quick ? std::vector<double>{200.0} : std::vector<double>{200.0, 500.0};
+  std::map<double, FishResult> results;
+  for (double E : moduli) results.emplace(E, run_case(ctx, E, end_time, summary));
+
+  const std::string paper = "paper section 4.4 (the values it states), within 15 % (issue 7)";
+  for (const auto& [E, r] : results) {
+    const std::string tag = fmt::format("E={:g}", E);
+    if (r.diverged) {
+      summary.check_missing(tag + " runs", "diverged", "issue 7");
+      continue;
+    }
+    summary.check_at_most(tag + " lift before t = 1 (symmetric start)", r.metrics.value("lift_before_t1", NAN), 1e-9,
+                          "the set-up is mirror-symmetric about the centre line; only round-off may break it at first");
+    if (ctx.quick) continue;
+    auto near = [&](const char* name, const std::string& label, double reference) {
+      const double v = r.metrics.value(name, NAN);
+      if (std::isnan(v)) summary.check_missing(tag + " " + label, "not measured (no oscillation after t = 20)", paper);
+      else summary.check_near(tag + " " + label, v, reference, 0.15 * reference, paper);
+    };
+    summary.check_range(tag + " sustained flapping: tail half peak-to-peak over the last fifth", r.metrics.value("tail_amplitude_last_fifth", NAN),
+                        0.1, 10.0, "paper: sustained flapping after t = 20");
+    near("tail_frequency", "tail frequency", 0.74);
+    near("head_amplitude_y", "head vertical amplitude", 0.3);
+    near("tail_amplitude_y", "tail vertical amplitude", 0.58);
+    near("tail_lissajous_ratio", "tail Lissajous ratio (x : y frequency)", 2.25);
+  }
+  summary.write(ctx.out_dir);
+  render_figures(ctx, "plot_fish.py", summary);
+  summary.write(ctx.out_dir);
+  return summary;
+}
+
+}  // namespace mrsph::verification
