@@ -4,7 +4,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 preset="${1:-release}"
-if [ ! -f "build/$preset/CMakeCache.txt" ]; then
+if [ ! -f "build/$preset/build.ninja" ]; then  # a configure that failed half-way is redone
   cmake --preset "$preset" >/dev/null
 fi
 cmake --build --preset "$preset"

@@ -13,14 +13,14 @@ if [ ${#need[@]} -gt 0 ]; then
   if [ "$(id -u)" -eq 0 ]; then as_root=(); else as_root=(sudo); fi
   "${as_root[@]}" apt-get update -qq && "${as_root[@]}" apt-get install -y -qq "${need[@]}"
 fi
-[ -f build/fuzz/CMakeCache.txt ] || cmake --preset fuzz >/dev/null
+[ -f build/fuzz/build.ninja ] || cmake --preset fuzz >/dev/null  # configured only if a configure completed
 cmake --build --preset fuzz --target scene_fuzzer
 corpus=build/fuzz/corpus; findings=build/fuzz/findings
 mkdir -p "$corpus" "$findings"
 cp verification/scenes/*.json tests/bad_scenes/*.json "$corpus"/
 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
   build/fuzz/scene_fuzzer "$corpus" -dict=tests/fuzz/scene.dict -max_total_time="$seconds" -max_len=4096 \
-  -timeout=10 -rss_limit_mb=2048 -artifact_prefix="$findings/" -print_final_stats=1 2>&1 | tail -25
+  -timeout=60 -rss_limit_mb=2048 -artifact_prefix="$findings/" -print_final_stats=1 2>&1 | tail -25
 count=$(find "$findings" -type f | wc -l)
 echo "fuzz_scene: $seconds s, corpus $(ls "$corpus" | wc -l) inputs, findings: $count"
 [ "$count" -eq 0 ]
