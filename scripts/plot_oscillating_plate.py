@@ -51,7 +51,7 @@ for row in summary["convergence"]:
     ax.plot(res, [row[f"period_res{r}"] for r in res], "o-", label=row["material"])
     if "extrapolated" in row:
         ax.axhline(row["extrapolated"], ls="--", lw=0.8, color="C0",
-                   label=f"Richardson ({row['material'][:3]}): {row['extrapolated']:.4f} s, order {row['observed_order']:.2f}")
+                   label=f"Richardson ({ {'saint_venant_kirchhoff': 'SVK', 'neo_hookean': 'NH'}.get(row['material'], row['material'])}): {row['extrapolated']:.4f} s, order {row['observed_order']:.2f}")
 b0 = [r for r in summary["runs"] if r["config"].get("gradient_correction") == "first_order"]
 if b0:
     ax.plot([r["config"]["resolution"] for r in b0], [r["metrics"]["period"] for r in b0], "s--", color="gray",
