@@ -1,9 +1,9 @@
+#include "core/thread_limit.hpp"
 #include "simulation/checkpoint.hpp"
 #include "scene/scene_loader.hpp"
 #include "simulation/runner.hpp"
 
 #include <catch2/catch.hpp>
-#include <tbb/global_control.h>
 
 #include <cstring>
 #include <filesystem>
@@ -107,7 +107,7 @@ TEST_CASE("The same scene gives bitwise identical results, run to run and for 1 
   std::string reference;
   std::vector<ObserverSeries> reference_series;
   for (int threads : {2, 2, 1}) {
-    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+    run_with_threads(threads, [&] {
     LoadedScene s = load_scene(kScene, {});
     RunOptions o = options_for(s);
     o.end_time = 0.5;
@@ -121,5 +121,7 @@ TEST_CASE("The same scene gives bitwise identical results, run to run and for 1 
       CHECK(bytes == reference);
       CHECK(same_series(r.series, reference_series));
     }
+    return 0;
+    });
   }
 }

@@ -1,4 +1,5 @@
 // verify: the verification and benchmark harness. See `verify --help`.
+#include "core/thread_limit.hpp"
 #include "io/atomic_file.hpp"
 #include "report/markdown_report.hpp"
 #include "report/paper_tables.hpp"
@@ -8,7 +9,6 @@
 #include <CLI/CLI.hpp>
 #include <fmt/chrono.h>
 #include <fmt/format.h>
-#include <tbb/global_control.h>
 #include <tbb/info.h>
 
 #include <chrono>
@@ -95,9 +95,8 @@ int main(int argc, char** argv) {
     return 2;
   }
 
-  std::unique_ptr<tbb::global_control> thread_limit;
-  if (threads > 0) thread_limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, threads);
   const int used_threads = threads > 0 ? threads : tbb::info::default_concurrency();
+  return mrsph::run_with_threads(used_threads, [&]() -> int {
 
   fs::path run_dir = existing_run.empty() ? fs::path(out_dir) : fs::path(existing_run);
   if (run_dir.empty()) {
@@ -177,4 +176,5 @@ int main(int argc, char** argv) {
     return 2;
   }
   return all_passed ? 0 : 1;
+  });
 }

@@ -1,4 +1,5 @@
 // mrsph: runs any scene file. See `mrsph --help`.
+#include "core/thread_limit.hpp"
 #include "io/atomic_file.hpp"
 #include "scene/scene_loader.hpp"
 #include "simulation/checkpoint.hpp"
@@ -7,7 +8,6 @@
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
-#include <tbb/global_control.h>
 #include <tbb/info.h>
 
 #include <atomic>
@@ -108,11 +108,8 @@ int main(int argc, char** argv) {
 
   CLI11_PARSE(app, argc, argv);
 
-  std::unique_ptr<tbb::global_control> thread_limit;
-  if (threads > 0)
-    thread_limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, threads);
   const int used_threads = threads > 0 ? threads : tbb::info::default_concurrency();
-
+  return mrsph::run_with_threads(used_threads, [&]() -> int {
   try {
     mrsph::SceneLimits limits;
     limits.max_particles = max_particles;
@@ -199,4 +196,5 @@ int main(int argc, char** argv) {
     fmt::print(stderr, "error: {}\n", e.what());
     return kExitFailure;
   }
+  });
 }
