@@ -15,8 +15,10 @@ for ax, name in zip(axes[0], benchmarks):
         ax.annotate(p["label"].split(" ", 1)[1], (p["wall_s"], p["error"]), fontsize=6, xytext=(3, 3), textcoords="offset points")
     front = sorted([p for p in pts if p["pareto"]], key=lambda p: p["wall_s"])
     ax.plot([p["wall_s"] for p in front], [p["error"] for p in front], "-", color="C1", label="Pareto front")
-    ax.set_xscale("log")
-    ax.set_yscale("log")
+    # Logarithmic axes where the points span more than a decade; otherwise the log ticks crowd.
+    for values, set_scale in (([p["wall_s"] for p in pts], ax.set_xscale), ([p["error"] for p in pts], ax.set_yscale)):
+        if min(values) > 0 and max(values) / min(values) > 10:
+            set_scale("log")
     ax.set_xlabel("wall time [s], one thread")
     ax.set_ylabel(units[name])
     ax.set_title(name)
