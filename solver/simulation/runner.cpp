@@ -175,6 +175,18 @@ RunResult run_simulation(Simulation& sim, Schedule& schedule, const std::vector<
   return result;
 }
 
+const ObserverSeries& series_named(const std::vector<ObserverSeries>& series, const std::string& name) {
+  for (const ObserverSeries& s : series)
+    if (s.name == name) return s;
+  throw std::runtime_error("no observer series '" + name + "'");
+}
+
+std::vector<Real> series_column(const ObserverSeries& series, std::size_t column) {
+  std::vector<Real> out;
+  for (const auto& row : series.values) out.push_back(row.at(column));
+  return out;
+}
+
 void write_observer_series(const std::vector<ObserverSeries>& series, const std::filesystem::path& dir) {
   for (const ObserverSeries& s : series) {
     CsvTable table;

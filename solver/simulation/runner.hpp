@@ -32,6 +32,11 @@ struct ObserverSeries {
   std::vector<std::vector<Real>> values;
 };
 
+// The series of the observer called `name` (throws std::runtime_error naming it if absent).
+const ObserverSeries& series_named(const std::vector<ObserverSeries>& series, const std::string& name);
+// One value column of a series (0: the first after time).
+std::vector<Real> series_column(const ObserverSeries& series, std::size_t column);
+
 // The runner's own state, saved in checkpoints so outputs continue seamlessly after a restart.
 struct RunnerState {
   Real next_observation = 0.0;

@@ -26,18 +26,6 @@ struct FishResult {
   Json metrics = Json::object();
 };
 
-const ObserverSeries& series(const RunResult& r, const std::string& name) {
-  for (const auto& s : r.series)
-    if (s.name == name) return s;
-  throw std::runtime_error("no observer " + name);
-}
-
-std::vector<double> column(const ObserverSeries& s, std::size_t c) {
-  std::vector<double> out;
-  for (const auto& row : s.values) out.push_back(row[c]);
-  return out;
-}
-
 FishResult run_case(const SuiteContext& ctx, double E, double end_time, SuiteSummary& summary) {
   if (ctx.log) ctx.log(fmt::format("fish: E = {:g} to t = {:g}", E, end_time));
   FishResult out{E};
@@ -64,25 +52,25 @@ FishResult run_case(const SuiteContext& ctx, double E, double end_time, SuiteSum
 
   Json& m = out.metrics;
   const double settle = 20.0;
-  const ObserverSeries& head = series(run.result, "head");
-  const ObserverSeries& tail = series(run.result, "tail");
-  const ObserverSeries& forces = series(run.result, "forces");
-  if (const auto h = oscillation_stats(head.time, column(head, 1), settle)) {
+  const ObserverSeries& head = series_named(run.result.series, "head");
+  const ObserverSeries& tail = series_named(run.result.series, "tail");
+  const ObserverSeries& forces = series_named(run.result.series, "forces");
+  if (const auto h = oscillation_stats(head.time, series_column(head, 1), settle)) {
     m["head_amplitude_y"] = h->amplitude;
     m["head_mean_y"] = h->mean;
     m["head_frequency"] = h->frequency;
   }
-  if (const auto ty = oscillation_stats(tail.time, column(tail, 1), settle)) {
+  if (const auto ty = oscillation_stats(tail.time, series_column(tail, 1), settle)) {
     m["tail_amplitude_y"] = ty->amplitude;
     m["tail_mean_y"] = ty->mean;
     m["tail_frequency"] = ty->frequency;
     m["tail_cycles"] = ty->cycles;
-    if (const auto f = spectral_peak_frequency(tail.time, column(tail, 1), settle, 0.01, 3.0)) m["tail_frequency_spectral"] = *f;
-    if (const auto tx = oscillation_stats(tail.time, column(tail, 0), settle)) m["tail_lissajous_ratio"] = tx->frequency / ty->frequency;
+    if (const auto f = spectral_peak_frequency(tail.time, series_column(tail, 1), settle, 0.01, 3.0)) m["tail_frequency_spectral"] = *f;
+    if (const auto tx = oscillation_stats(tail.time, series_column(tail, 0), settle)) m["tail_lissajous_ratio"] = tx->frequency / ty->frequency;
   }
   // Sustained flapping: half peak-to-peak of the tail over the last fifth of the run.
   {
-    const std::vector<double> y = column(tail, 1);
+    const std::vector<double> y = series_column(tail, 1);
     double lo = INFINITY, hi = -INFINITY;
     for (std::size_t k = 0; k < y.size(); ++k)
       if (tail.time[k] >= 0.8 * end_time) { lo = std::min(lo, y[k]); hi = std::max(hi, y[k]); }

@@ -19,7 +19,6 @@
 
 #include <cmath>
 #include <map>
-#include <optional>
 
 namespace mrsph::verification {
 
@@ -32,16 +31,10 @@ struct FsiResult {
   Json metrics = Json::object();
 };
 
-std::vector<double> column(const ObserverSeries& s, std::size_t c) {
-  std::vector<double> out;
-  for (const auto& row : s.values) out.push_back(row[c]);
-  return out;
-}
-
 }  // namespace
 
 Json fsi2_metrics(const ObserverSeries& tip, const ObserverSeries& forces, double end_time, double settle) {
-  const std::vector<double> x = column(tip, 0), y = column(tip, 1);
+  const std::vector<double> x = series_column(tip, 0), y = series_column(tip, 1);
   Json m = Json::object();
   if (const auto sy = oscillation_stats(tip.time, y, settle)) {
     m["amplitude_y"] = sy->amplitude;
@@ -61,11 +54,11 @@ Json fsi2_metrics(const ObserverSeries& tip, const ObserverSeries& forces, doubl
   // Forces carry SPH pressure noise: smoothed over 0.5 D/U0 (a tenth of the lift period) first,
   // which lowers the lift amplitude by sinc(pi f w) = 1.6 % and the drag amplitude by 6 %.
   const double window = 0.5;
-  if (const auto drag = oscillation_stats(forces.time, moving_average(forces.time, column(forces, 0), window), settle)) {
+  if (const auto drag = oscillation_stats(forces.time, moving_average(forces.time, series_column(forces, 0), window), settle)) {
     m["drag_mean"] = drag->mean;
     m["drag_amplitude"] = drag->amplitude;
   }
-  if (const auto lift = oscillation_stats(forces.time, moving_average(forces.time, column(forces, 1), window), settle)) {
+  if (const auto lift = oscillation_stats(forces.time, moving_average(forces.time, series_column(forces, 1), window), settle)) {
     m["lift_mean"] = lift->mean;
     m["lift_amplitude"] = lift->amplitude;
   }
@@ -98,33 +91,28 @@ struct CaseRun {
   Json divergence;  // null unless diverged
   Json parameters = Json::object();
   bool reused = false;
+  std::string failure;  // no outputs (with --merge: not run, or not finished, yet); nothing else is set
 };
 
 CaseRun run_here(const SuiteContext& ctx, const FsiCase& c, double end_time) {
   if (ctx.log) ctx.log(fmt::format("turek-hron: case {} (ratio {}, bh/dp_S = {}, {}, t = {:g})", c.name, c.ratio,
                                    c.resolution, c.schedule, end_time));
-  SceneRun run = run_scene(ctx, "turek_hron_fsi2.json", fsi2_sweep_run(c, end_time).overrides, [&](const LoadedScene&) {
+  const SweepRun as_sweep = fsi2_sweep_run(c, end_time);
+  SceneRun run = run_scene(ctx, as_sweep.scene, as_sweep.overrides, [&](const LoadedScene&) {
     RunOptions options;
     options.end_time = end_time;
     return options;
   });
   // Shared with the sweep suites (speed-accuracy reuses the cases).
-  persist_in_cache(ctx, fsi2_sweep_run(c, end_time), run.scene, run.result);
-  CaseRun out{run.result.series, cost_json(run), divergence_record(run), Json::object(), false};
+  persist_in_cache(ctx, as_sweep, run.scene, run.result);
+  CaseRun out{run.result.series, cost_json(run), divergence_record(run), Json::object(), false, ""};
   for (const char* name : {"dp_solid", "dp_fluid", "damping"}) out.parameters[name] = run.scene.parameters.at(name);
   return out;
 }
 
-// Nothing when the run has no outputs (with --merge: not run, or not finished, yet).
-std::optional<CaseRun> from_sweep(const SweepOutcome& o) {
-  if (!o.failure.empty()) return std::nullopt;
-  return CaseRun{o.series, o.cost, o.diverged ? o.divergence : Json(), o.parameters, o.reused};
-}
-
-const ObserverSeries& series_named(const CaseRun& r, const std::string& name) {
-  for (const auto& s : r.series)
-    if (s.name == name) return s;
-  throw std::runtime_error("no observer series '" + name + "'");
+CaseRun from_sweep(const SweepOutcome& o) {
+  if (!o.failure.empty()) return CaseRun{{}, Json::object(), Json(), Json::object(), false, o.failure};
+  return CaseRun{o.series, o.cost, o.diverged ? o.divergence : Json(), o.parameters, o.reused, ""};
 }
 
 FsiResult analyse_case(const SuiteContext& ctx, const FsiCase& c, const CaseRun& run, double end_time, double settle,
@@ -133,7 +121,7 @@ FsiResult analyse_case(const SuiteContext& ctx, const FsiCase& c, const CaseRun&
   out.diverged = !run.divergence.is_null();
   out.wall_s = run.cost.value("wall_s", NAN);
   write_observer_series(run.series, ctx.out_dir / ("case_" + c.name));
-  out.metrics = fsi2_metrics(series_named(run, "tip"), series_named(run, "forces"), end_time, settle);
+  out.metrics = fsi2_metrics(series_named(run.series, "tip"), series_named(run.series, "forces"), end_time, settle);
 
   SuiteRun record;
   record.case_name = c.name;
@@ -196,8 +184,7 @@ SuiteSummary run_turek_hron_suite(const SuiteContext& ctx) {
   // One case at a time in-process (ctx.threads each; always so for the single quick case, and with
   // --jobs 1), or else through the sweep engine: single-threaded runs, --jobs at once, reused from the
   // cache when done, or emitted as commands (--emit-commands) and analysed later (--merge).
-  std::vector<std::optional<CaseRun>> runs;
-  std::vector<std::string> failures(cases.size());
+  std::vector<CaseRun> runs;
   const bool in_process = (ctx.jobs == 1 || cases.size() == 1) && ctx.sweep_mode == SweepMode::Run;
   if (in_process) {
     for (const FsiCase& c : cases) runs.push_back(run_here(ctx, c, end_time));
@@ -209,19 +196,16 @@ SuiteSummary run_turek_hron_suite(const SuiteContext& ctx) {
       summary.write(ctx.out_dir);
       return summary;
     }
-    for (std::size_t k = 0; k < outcomes.size(); ++k) {
-      runs.push_back(from_sweep(outcomes[k]));
-      failures[k] = outcomes[k].failure;
-    }
+    for (const SweepOutcome& o : outcomes) runs.push_back(from_sweep(o));
   }
   std::map<std::string, FsiResult> results;
   for (std::size_t k = 0; k < cases.size(); ++k) {
-    if (runs[k])
-      results.emplace(cases[k].name, analyse_case(ctx, cases[k], *runs[k], end_time, settle, summary));
+    if (runs[k].failure.empty())
+      results.emplace(cases[k].name, analyse_case(ctx, cases[k], runs[k], end_time, settle, summary));
     else if (ctx.sweep_mode == SweepMode::Merge)  // not run yet: said, not failed
-      summary.note_skipped("case " + cases[k].name, failures[k] + " (run its command first)");
+      summary.note_skipped("case " + cases[k].name, runs[k].failure + " (run its command first)");
     else
-      summary.check_missing("case " + cases[k].name + " runs", failures[k], "issue 4");
+      summary.check_missing("case " + cases[k].name + " runs", runs[k].failure, "issue 4");
   }
   if (!results.count("III")) {
     summary.check_missing("case III runs to the end", "no run", "issue 4");

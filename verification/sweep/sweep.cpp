@@ -186,16 +186,13 @@ void emit_sweep(const SuiteContext& ctx, const std::vector<SweepRun>& runs, cons
 }
 
 const ObserverSeries& outcome_series(const SweepOutcome& outcome, const std::string& name) {
-  for (const ObserverSeries& s : outcome.series)
-    if (s.name == name) return s;
-  throw std::runtime_error("run '" + outcome.run.label + "' has no observer '" + name + "'");
+  try {
+    return series_named(outcome.series, name);
+  } catch (const std::runtime_error&) {
+    throw std::runtime_error("run '" + outcome.run.label + "' has no observer '" + name + "'");
+  }
 }
 
-std::vector<double> series_column(const ObserverSeries& series, std::size_t column) {
-  std::vector<double> out;
-  for (const auto& row : series.values) out.push_back(row.at(column));
-  return out;
-}
 
 
 std::vector<SweepOutcome> sweep(const SuiteContext& ctx, const std::vector<SweepRun>& runs, SuiteSummary& summary) {

@@ -65,6 +65,5 @@ void persist_in_cache(const SuiteContext& ctx, const SweepRun& run, const Loaded
 
 // The series of an outcome by observer name (throws if absent).
 const ObserverSeries& outcome_series(const SweepOutcome& outcome, const std::string& name);
-std::vector<double> series_column(const ObserverSeries& series, std::size_t column);
 
 }  // namespace mrsph::verification
