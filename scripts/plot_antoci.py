@@ -13,9 +13,11 @@ def optional(name):
     return read_csv(path) if os.path.exists(path) else None
 
 
+DAMPING_STUDY = ("III-undamped", "III-undamped-instantaneous", "III-damping-0.2")
+
 fig, (ax_x, ax_y) = plt.subplots(2, 1, figsize=(8, 7), sharex=True)
 for run in summary["runs"]:
-    if run["case"] == "dam break":
+    if run["case"] == "dam break" or run["case"] in DAMPING_STUDY:
         continue
     d = read_csv(os.path.join(directory, f"case_{run['case']}", "tip_mm.csv"))
     ax_x.plot(d["time"], d["x_mm"], lw=1.2, label=f"mrsph case {run['case']}")
@@ -40,6 +42,21 @@ ax_y.set_ylabel("vertical displacement [mm]")
 ax_y.set_xlabel("t [s]")
 ax_x.legend(fontsize=7)
 save(fig, directory, "antoci_displacement.png")
+
+study = [run["case"] for run in summary["runs"] if run["case"] in DAMPING_STUDY]
+if study:  # case III against its damping study (full mode)
+    fig, ax = plt.subplots(figsize=(8, 4.5))
+    for case in ["III"] + study:
+        d = read_csv(os.path.join(directory, f"case_{case}", "tip_mm.csv"))
+        damping = next(r["config"] for r in summary["runs"] if r["case"] == case)
+        ax.plot(d["time"], d["x_mm"], lw=1.0,
+                label=f"case {case} (damping {damping['solid_damping']:g}, {damping['solid_kinematics']} kinematics)")
+    if exp:
+        ax.plot(exp["time"], exp["x_mm"], "ks", ms=5, label="experiment (Antoci et al. 2007)")
+    ax.set_xlabel("t [s]")
+    ax.set_ylabel("horizontal displacement of the free end [mm]")
+    ax.legend(fontsize=7)
+    save(fig, directory, "antoci_damping.png")
 
 frames_path = os.path.join(directory, "case_III", "frames.csv")
 if os.path.exists(frames_path):

@@ -17,6 +17,7 @@
 
 #include <cmath>
 #include <map>
+#include <optional>
 
 namespace mrsph::verification {
 
@@ -28,6 +29,8 @@ struct GateCase {
   int resolution;
   std::string schedule;
   std::string gradient_correction = "second_order";
+  std::optional<double> damping{};  // Kelvin-Voigt coefficient; the scene's (0.05) if not given
+  std::string kinematics{};       // solid velocity/acceleration the fluid sees; the scene's if empty
 };
 
 struct Curve {
@@ -58,10 +61,12 @@ struct GateResult {
 GateResult run_case(const SuiteContext& ctx, const GateCase& c, const std::optional<Curve>& exp_x,
                     const std::optional<Curve>& exp_y, bool snapshots, SuiteSummary& summary) {
   if (ctx.log) ctx.log(fmt::format("antoci: case {} (ratio {}, b/dp_S = {}, {})", c.name, c.ratio, c.resolution, c.schedule));
-  const std::vector<std::string> overrides{fmt::format("parameters.ratio={}", c.ratio),
-                                           fmt::format("parameters.resolution={}", c.resolution),
-                                           fmt::format("schedule.type=\"{}\"", c.schedule),
-                                           fmt::format("solids[0].gradient_correction=\"{}\"", c.gradient_correction)};
+  std::vector<std::string> overrides{fmt::format("parameters.ratio={}", c.ratio),
+                                     fmt::format("parameters.resolution={}", c.resolution),
+                                     fmt::format("schedule.type=\"{}\"", c.schedule),
+                                     fmt::format("solids[0].gradient_correction=\"{}\"", c.gradient_correction)};
+  if (c.damping) overrides.push_back(fmt::format("parameters.damping={}", *c.damping));
+  if (!c.kinematics.empty()) overrides.push_back(fmt::format("schedule.solid_kinematics=\"{}\"", c.kinematics));
   CsvTable frames;
   frames.columns = {"time", "body", "x", "y", "pressure"};
   SceneRun run = run_scene(ctx, "elastic_gate.json", overrides, [&](const LoadedScene&) {
@@ -94,6 +99,14 @@ GateResult run_case(const SuiteContext& ctx, const GateCase& c, const std::optio
     out.y.value.push_back(1000.0 * tip.values[k][1]);
   }
   Json& m = out.metrics;
+  if (!out.diverged && out.x.t.size() > 20) {
+    // Particle-scale noise of the free end: the RMS of x about its 11 ms centred moving average
+    // (the gate's first bending period is about 90 ms, so the average keeps the physical motion).
+    const std::vector<double> smooth = moving_average(out.x.t, out.x.value, 0.011);
+    double sum = 0.0;
+    for (std::size_t k = 0; k < smooth.size(); ++k) sum += (out.x.value[k] - smooth[k]) * (out.x.value[k] - smooth[k]);
+    m["tip_noise_x_mm"] = std::sqrt(sum / smooth.size());
+  }
   if (exp_x && !out.diverged)
     if (const auto cx = compare_curves(out.x.t, out.x.value, exp_x->t, exp_x->value)) {
       m["rms_error_x_mm"] = cx->rms_error;
@@ -127,7 +140,8 @@ GateResult run_case(const SuiteContext& ctx, const GateCase& c, const std::optio
   record.config = {{"ratio", c.ratio}, {"resolution", c.resolution}, {"schedule", c.schedule},
                    {"gradient_correction", c.gradient_correction},
                    {"dp_solid", run.scene.parameters.at("dp_solid")}, {"dp_fluid", run.scene.parameters.at("dp_fluid")},
-                   {"solid_damping", run.scene.parameters.at("damping")}, {"scene", "elastic_gate.json"}};
+                   {"solid_damping", run.scene.parameters.at("damping")},
+                   {"solid_kinematics", c.kinematics.empty() ? "averaged" : c.kinematics}, {"scene", "elastic_gate.json"}};
   record.metrics = m;
   record.cost = cost_json(run);
   record.diverged = out.diverged;
@@ -243,6 +257,20 @@ SuiteSummary run_antoci_suite(const SuiteContext& ctx) {
   if (ctx.quick) cases = {{"III", 2, 4, "multi_step_position_verlet"}, paper_weights};
   else cases = {{"I", 1, 4, "multi_step_position_verlet"}, {"II", 1, 8, "multi_step_position_verlet"},
                 {"III", 2, 4, "multi_step_position_verlet"}, {"IV", 2, 4, "single_step_position_verlet"}, paper_weights};
+  // The damping study (reports/antoci.md): case III without the Kelvin-Voigt damping, with the
+  // averaged and the instantaneous solid kinematics, and with four times the damping.
+  if (!ctx.quick) {
+    const GateCase III{"III", 2, 4, "multi_step_position_verlet"};
+    GateCase undamped = III, undamped_instantaneous = III, damped_more = III;
+    undamped.name = "III-undamped";
+    undamped.damping = 0.0;
+    undamped_instantaneous.name = "III-undamped-instantaneous";
+    undamped_instantaneous.damping = 0.0;
+    undamped_instantaneous.kinematics = "instantaneous";
+    damped_more.name = "III-damping-0.2";
+    damped_more.damping = 0.2;
+    for (const GateCase& c : {undamped, undamped_instantaneous, damped_more}) cases.push_back(c);
+  }
   std::map<std::string, GateResult> results;
   for (const GateCase& c : cases) {
     GateResult r = run_case(ctx, c, exp_x, exp_y, c.name == "III", summary);
@@ -270,6 +298,15 @@ SuiteSummary run_antoci_suite(const SuiteContext& ctx) {
       summary.check_at_most("case III RMS error of x against the experiment [mm]", metric(III, "rms_error_x_mm"), 5.0, issue);
       summary.check_near("case III peak time [s]", metric(III, "peak_time_s"), 0.162, 0.03, issue + ": 0.162 s +/- 0.03 s");
     }
+  }
+  if (!ctx.quick && !III.diverged) {
+    // The damping is there to remove particle-scale noise (below), not to change the gate's
+    // response: a fourfold coefficient must leave the peak where it is. 1 mm is 2 % of the peak,
+    // a fifth of the issue's 5 mm RMS budget.
+    const GateResult& more = results.at("III-damping-0.2");
+    summary.check_at_most("case III peak x changes by less than 1 mm when the damping goes from 0.05 to 0.2 [mm]",
+                          std::abs(metric(more, "peak_x_mm") - metric(III, "peak_x_mm")), 1.0,
+                          "the damping must act on particle-scale noise only (reports/antoci.md, damping study)");
   }
   if (!ctx.quick) {
     const GateResult& IV = results.at("IV");
