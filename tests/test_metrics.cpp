@@ -45,6 +45,29 @@ TEST_CASE("Oscillation metrics refuse a signal with too few cycles", "[metrics]"
   CHECK_FALSE(oscillation_stats(t, y, 8.5));
 }
 
+TEST_CASE("The switching period of a two-state signal with spikes and wobble", "[metrics]") {
+  // Period 0.6: open (2.0) for 0.2, then closed (-0.3) wobbling with amplitude 0.8 at 25 Hz, with a
+  // spike past each state at each switch. The wobble crosses the mean many times per period, so the
+  // mean-crossing count sees extra cycles; the switch count must not.
+  std::vector<double> t, y;
+  for (int k = 0; k <= 2000; ++k) {
+    t.push_back(k * 0.001);
+    const double phase = std::fmod(t.back(), 0.6);
+    double v = phase < 0.2 ? 2.0 + 0.1 * std::sin(2 * M_PI * 60.0 * t.back()) : -0.3 + 0.8 * std::sin(2 * M_PI * 25.0 * t.back());
+    if (phase < 0.004) v = 5.0;                     // overshoot as it opens
+    if (std::abs(phase - 0.2) < 0.002) v = -4.0;    // and as it closes
+    y.push_back(v);
+  }
+  const auto s = switching_period(t, y, 0.45);
+  REQUIRE(s);
+  CHECK(s->period == Approx(0.6).epsilon(0.01));
+  CHECK(s->switches == 3);
+  const auto crossings = oscillation_stats(t, y, 0.45);
+  REQUIRE(crossings);
+  CHECK(1.0 / crossings->frequency < 0.2);   // the wobble adds mean crossings
+  CHECK_FALSE(switching_period(t, y, 1.5));  // one switch-up only after t = 1.5
+}
+
 TEST_CASE("Curve comparison: RMS and max error at the reference times, and the peaks", "[metrics]") {
   std::vector<double> t_run, y_run;
   for (int k = 0; k <= 400; ++k) { t_run.push_back(k * 0.001); y_run.push_back(std::sin(10 * t_run.back())); }

@@ -131,6 +131,34 @@ std::optional<double> spectral_peak_frequency(const std::vector<double>& t, cons
   return best_f;
 }
 
+std::optional<SwitchingPeriod> switching_period(const std::vector<double>& t, const std::vector<double>& y,
+                                                double settle_time, double band) {
+  if (t.size() != y.size()) throw std::invalid_argument("switching_period: t and y differ in length");
+  const std::size_t first = static_cast<std::size_t>(std::lower_bound(t.begin(), t.end(), settle_time) - t.begin());
+  if (t.size() - first < 8) return std::nullopt;
+  std::vector<double> sorted(y.begin() + static_cast<long>(first), y.end());
+  std::sort(sorted.begin(), sorted.end());
+  SwitchingPeriod out;
+  out.low_level = sorted[static_cast<std::size_t>(0.05 * (sorted.size() - 1))];
+  out.high_level = sorted[static_cast<std::size_t>(0.95 * (sorted.size() - 1))];
+  const double range = out.high_level - out.low_level;
+  if (!(range > 0.0)) return std::nullopt;
+  const double lower = out.low_level + band * range, upper = out.high_level - band * range;
+  bool armed = false;  // the signal has been below the lower threshold since the last switch-up
+  std::vector<double> times;
+  for (std::size_t k = first; k < t.size(); ++k) {
+    if (y[k] < lower) armed = true;
+    if (armed && k > first && y[k] > upper && y[k - 1] <= upper) {
+      times.push_back(t[k - 1] + (t[k] - t[k - 1]) * (upper - y[k - 1]) / (y[k] - y[k - 1]));
+      armed = false;
+    }
+  }
+  if (times.size() < 2) return std::nullopt;
+  out.switches = static_cast<int>(times.size());
+  out.period = (times.back() - times.front()) / (times.size() - 1);
+  return out;
+}
+
 std::optional<CurveComparison> compare_curves(const std::vector<double>& t_run, const std::vector<double>& y_run,
                                               const std::vector<double>& t_ref, const std::vector<double>& y_ref) {
   if (t_run.empty() || t_ref.empty()) return std::nullopt;

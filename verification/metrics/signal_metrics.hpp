@@ -30,6 +30,20 @@ std::optional<OscillationStats> oscillation_stats(const std::vector<double>& t, 
 std::optional<double> spectral_peak_frequency(const std::vector<double>& t, const std::vector<double>& y,
                                               double settle_time, double f_min, double f_max);
 
+// Period of a signal that switches between two states (a valve leaflet flipping with the flow):
+// the mean time between "switch-ups", a rise above the upper threshold after a fall below the lower
+// one. The thresholds lie `band` of the way in from the 5th and 95th percentiles of the signal after
+// `settle_time`, so spikes at the switches and noise within a state are not counted as cycles (the
+// mean-crossing count of oscillation_stats is). Nothing if fewer than two switch-ups follow.
+struct SwitchingPeriod {
+  double period = 0.0;
+  int switches = 0;           // switch-ups counted (switches - 1 periods)
+  double low_level = 0.0;     // 5th and 95th percentiles after settle_time
+  double high_level = 0.0;
+};
+std::optional<SwitchingPeriod> switching_period(const std::vector<double>& t, const std::vector<double>& y,
+                                                double settle_time, double band = 0.25);
+
 struct CurveComparison {
   double rms_error = 0.0;
   double max_error = 0.0;
