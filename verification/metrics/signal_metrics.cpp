@@ -153,9 +153,8 @@ std::optional<SwitchingPeriod> switching_period(const std::vector<double>& t, co
       armed = false;
     }
   }
-  if (times.size() < 2) return std::nullopt;
   out.switches = static_cast<int>(times.size());
-  out.period = (times.back() - times.front()) / (times.size() - 1);
+  out.period = times.size() < 2 ? NAN : (times.back() - times.front()) / (times.size() - 1);
   return out;
 }
 

@@ -34,7 +34,8 @@ std::optional<double> spectral_peak_frequency(const std::vector<double>& t, cons
 // the mean time between "switch-ups", a rise above the upper threshold after a fall below the lower
 // one. The thresholds lie `band` of the way in from the 5th and 95th percentiles of the signal after
 // `settle_time`, so spikes at the switches and noise within a state are not counted as cycles (the
-// mean-crossing count of oscillation_stats is). Nothing if fewer than two switch-ups follow.
+// mean-crossing count of oscillation_stats is). The period is NaN if fewer than two switch-ups
+// follow; nothing is returned for fewer than 8 samples or a constant signal.
 struct SwitchingPeriod {
   double period = 0.0;
   int switches = 0;           // switch-ups counted (switches - 1 periods)

@@ -86,10 +86,10 @@ ValveResult run_case(const SuiteContext& ctx, double wo, double end_time, SuiteS
     m["final_dx_mm"] = dx.back();
     m["final_dy_mm"] = dy.back();
     const auto switch_x = switching_period(s.time, dx, T), switch_y = switching_period(s.time, dy, T);
-    if (switch_x && switch_y) {
+    if (switch_x && switch_y) {  // the leaflet's main motion: the component with the larger range
       const bool x_main = switch_x->high_level - switch_x->low_level > switch_y->high_level - switch_y->low_level;
       const SwitchingPeriod& main = x_main ? *switch_x : *switch_y;
-      m["period_s"] = main.period;
+      if (std::isfinite(main.period)) m["period_s"] = main.period;
       m["period_component"] = x_main ? "x" : "y";
       m["period_switches"] = main.switches;
     }
