@@ -193,8 +193,6 @@ const ObserverSeries& outcome_series(const SweepOutcome& outcome, const std::str
   }
 }
 
-
-
 std::vector<SweepOutcome> sweep(const SuiteContext& ctx, const std::vector<SweepRun>& runs, SuiteSummary& summary) {
   if (ctx.sweep_mode == SweepMode::Emit) {
     emit_sweep(ctx, runs, ctx.out_dir);
