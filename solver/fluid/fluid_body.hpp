@@ -30,6 +30,9 @@ enum class DensityReinitialisation {
 struct FluidOptions {
   DensityReinitialisation density = DensityReinitialisation::Internal;
   Real transport_velocity_alpha = 0.0;  // 0: no transport-velocity correction
+  // Initial particle relaxation (transport_velocity.hpp): this many shifts of the fluid particles
+  // towards a uniform distribution before t = 0, walls and solids held still. 0: the lattice as cut.
+  int relaxation_steps = 0;
   Real reference_velocity = 1.0;        // U_ref, a floor for the advection criterion
   // Divide the viscous operator by its lattice second moment (kernel/lattice_moments.hpp) so the
   // effective viscosity on a regular distribution is the physical one; off: the paper's code,

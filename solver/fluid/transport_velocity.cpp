@@ -2,11 +2,18 @@
 
 #include "core/parallel.hpp"
 
+#include <limits>
+
 namespace mrsph {
 
 void correct_transport_velocity(FluidBody& fluid, const NeighborList& inner, const std::vector<FluidContact>& contacts) {
   const Real alpha = fluid.options.transport_velocity_alpha;
   if (alpha == 0.0) return;
+  shift_towards_uniform_distribution(fluid, inner, contacts, alpha, std::numeric_limits<Real>::infinity());
+}
+
+void shift_towards_uniform_distribution(FluidBody& fluid, const NeighborList& inner,
+                                        const std::vector<FluidContact>& contacts, Real alpha, Real max_shift) {
   FluidParticles& f = fluid.particles;
   const Real coefficient = 2.0 * alpha * fluid.h() * fluid.h();
   // Shifts are computed from the unshifted positions (cached geometry), then applied.
@@ -19,6 +26,8 @@ void correct_transport_velocity(FluidBody& fluid, const NeighborList& inner, con
       for (const Neighbor& n : c.pairs.of(i)) residue += (vol[n.j] * n.dW) * n.e;
     }
     shift[i] = -coefficient * residue;
+    const Real length = shift[i].norm();
+    if (length > max_shift) shift[i] *= max_shift / length;
   });
   parallel_for_each(f.size(), [&](std::size_t i) { f.pos[i] += shift[i]; }, kGrainSimpleLoop);
 }

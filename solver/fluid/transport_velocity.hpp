@@ -3,6 +3,10 @@
 //   r_i <- r_i - 2 alpha h^2 [ sum_j V_j dW_ij e_ij + sum_a V_a dW_ia e_ia ]
 // It moves particles away from crowded regions and keeps the distribution uniform in internal
 // flows. It does not change velocities, so momentum is unaffected.
+// The same shift, repeated before t = 0 with the bodies held still, is the initial particle
+// relaxation (Simulation::initialise; fluid option relaxation_steps): a lattice cut by a slanted or
+// curved boundary leaves voids between fluid and solid particles, whose density deficit would
+// otherwise start the run with spurious pressure jets.
 #pragma once
 
 #include "fluid/fluid_body.hpp"
@@ -10,5 +14,9 @@
 namespace mrsph {
 
 void correct_transport_velocity(FluidBody& fluid, const NeighborList& inner, const std::vector<FluidContact>& contacts);
+
+// The shift above with coefficient alpha, each particle's shift limited to max_shift in length.
+void shift_towards_uniform_distribution(FluidBody& fluid, const NeighborList& inner,
+                                        const std::vector<FluidContact>& contacts, Real alpha, Real max_shift);
 
 }  // namespace mrsph

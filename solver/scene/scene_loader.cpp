@@ -115,7 +115,8 @@ struct PlacedBody {
   const Vec2Array* pos;
 };
 
-FluidBody read_fluid(const SceneNode& node, const DomainBox& box, double& budget, ShapePtr& region) {
+FluidBody read_fluid(const SceneNode& node, const DomainBox& box, double& budget, ShapePtr& region,
+                     InitialVelocity& velocity) {
   const std::string name = node.has("name") ? node.text("name") : "fluid";
   const Real dp = node.positive("dp");
   FluidBody fluid(name, dp, read_h_over_dp(node, 1.3));
@@ -143,11 +144,12 @@ FluidBody read_fluid(const SceneNode& node, const DomainBox& box, double& budget
                   ? DensityReinitialisation::FreeSurface
                   : DensityReinitialisation::Internal;
   o.transport_velocity_alpha = node.non_negative_or("transport_velocity_alpha", 0.0);
+  o.relaxation_steps = node.count_or("relaxation_steps", 0, 100000);
   o.reference_velocity = node.positive_or("reference_velocity", 1.0);
   o.viscous_lattice_correction = node.flag_or("viscous_lattice_correction", o.viscous_lattice_correction);
   o.advection_cfl = node.positive_or("advection_cfl", o.advection_cfl);
   o.acoustic_cfl = node.positive_or("acoustic_cfl", o.acoustic_cfl);
-  const InitialVelocity velocity = read_initial_velocity(node);
+  velocity = read_initial_velocity(node);
   node.finish();
 
   const GeneratedParticles g = generate_body(node, name, *region, dp, fill, box, budget);
@@ -310,9 +312,10 @@ LoadedScene build_scene(const Json& document, const std::string& file, const Sce
   std::vector<PlacedBody> placed;
   std::vector<ShapePtr> regions;
 
+  InitialVelocity fluid_velocity;
   if (const auto node = root.optional_child("fluid")) {
     ShapePtr region;
-    sim->set_fluid(read_fluid(*node, box, budget, region));
+    sim->set_fluid(read_fluid(*node, box, budget, region, fluid_velocity));
     regions.push_back(region);
   }
   const std::vector<SceneNode> wall_nodes = root.children("walls");
@@ -445,6 +448,10 @@ LoadedScene build_scene(const Json& document, const std::string& file, const Sce
   root.finish();
 
   sim->initialise();
+  if (sim->has_fluid() && sim->fluid().options.relaxation_steps > 0) {  // the relaxation moved the particles
+    FluidParticles& f = sim->fluid().particles;
+    for (std::size_t i = 0; i < f.size(); ++i) f.vel[i] = initial_velocity_at(fluid_velocity, f.pos[i]);
+  }
   for (const ObserverSpec& spec : scene.observers) {
     try {
       PointObserver probe(spec, *sim);

@@ -68,6 +68,16 @@ Real SceneNode::non_negative_or(const std::string& key, Real fallback) const {
   if (x < 0.0) fail(key, "expected a number >= 0, got " + std::to_string(x));
   return x;
 }
+int SceneNode::count_or(const std::string& key, int fallback, int max) const {
+  if (!has(key)) return fallback;
+  const Real x = number(key);
+  if (!(x >= 0.0 && x <= max && x == std::floor(x))) {
+    std::ostringstream s;
+    s << "expected a whole number from 0 to " << max << ", got " << x;
+    fail(key, s.str());
+  }
+  return static_cast<int>(x);
+}
 Real SceneNode::in_range(const std::string& key, Real lo, Real hi) const {
   const Real x = number(key);
   if (!(x > lo && x < hi)) {

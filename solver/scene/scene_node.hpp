@@ -41,6 +41,7 @@ class SceneNode {
   Real positive_or(const std::string& key, Real fallback) const;
   Real non_negative_or(const std::string& key, Real fallback) const;
   Real in_range(const std::string& key, Real lo, Real hi) const;  // lo < value < hi
+  int count_or(const std::string& key, int fallback, int max) const;  // a whole number in [0, max]
   Vec2 vec2(const std::string& key) const;
   Vec2 vec2_or(const std::string& key, const Vec2& fallback) const;
   std::vector<Vec2> vec2_list(const std::string& key) const;

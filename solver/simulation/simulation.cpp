@@ -2,6 +2,7 @@
 
 #include "core/parallel.hpp"
 #include "fluid/density_summation.hpp"
+#include "fluid/transport_velocity.hpp"
 #include "geometry/particle_normals.hpp"
 #include "solid/solid_dynamics.hpp"
 
@@ -57,6 +58,7 @@ void Simulation::initialise() {
     contacts_.push_back(std::move(c));
   }
   rebuild_fluid_relations();
+  relax_fluid_particles();
   reinitialise_density(*fluid_, fluid_inner_, contacts_);
   FluidParticles& f = fluid_->particles;
   for (std::size_t i = 0; i < f.size(); ++i) f.p[i] = fluid_->material.eos.pressure(f.rho[i]);
@@ -84,6 +86,17 @@ std::vector<Index> cell_order(const Vec2Array& pos, const DomainBox& box, Real c
 constexpr std::size_t kSortInterval = 100;  // advection steps between reorderings
 
 }  // namespace
+
+void Simulation::relax_fluid_particles() {
+  // Coefficient and step limit of the relaxation: alpha = 0.25 as the transport-velocity correction
+  // of the internal-flow scenes; a particle moves at most a tenth of a spacing per shift, so none
+  // jumps a wall or solid layer before the shifts from its new neighbours can push it back.
+  constexpr Real kAlpha = 0.25, kMaxShiftOverDp = 0.1;
+  for (int k = 0; k < fluid_->options.relaxation_steps; ++k) {
+    shift_towards_uniform_distribution(*fluid_, fluid_inner_, contacts_, kAlpha, kMaxShiftOverDp * fluid_->dp);
+    rebuild_fluid_relations();
+  }
+}
 
 void Simulation::rebuild_fluid_relations() {
   if (!fluid_) return;

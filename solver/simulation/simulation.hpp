@@ -99,6 +99,8 @@ class Simulation {
   std::vector<FluidContact> contacts_;
   std::size_t rebuilds_since_sort_ = 0;  // rebuilds so far; every kSortInterval-th one reorders
   void build_pair_lists();
+  // Initial particle relaxation (FluidOptions::relaxation_steps), bodies held still.
+  void relax_fluid_particles();
 };
 
 }  // namespace mrsph
