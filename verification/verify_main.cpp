@@ -48,7 +48,7 @@ int main(int argc, char** argv) {
   app.add_option("--write-baseline", write_baseline, "write a baseline of the run's metrics to this file (needs --rules)");
   int jobs = 0;
   bool emit = false, merge = false;
-  app.add_option("--jobs", jobs, "concurrent single-threaded runs in sweep suites (default: the hardware threads)")
+  app.add_option("--jobs", jobs, "concurrent single-threaded runs in sweep suites and the full valve suite (default: the hardware threads)")
       ->check(CLI::NonNegativeNumber);
   app.add_flag("--emit-commands", emit,
                "sweep suites: write their runs as mrsph commands (DIR/<suite>/commands.txt for GNU parallel, "

@@ -7,7 +7,8 @@
 //              its open and flipped states (switching_period; the leaflet flips over with the
 //              reversing flow, so the signal is square-wave-like with spikes at the flips, and
 //              mean crossings would count its wobble as cycles); amplitude (half peak-to-peak), x and y
-// Full: t = 2.0 s (3.3 periods), snapshot at 2.0 s (von Mises stress, fluid velocity). Quick: Wo = 10
+// Full: t = 2.0 s (3.3 periods), snapshot at 2.0 s (von Mises stress, fluid velocity); the three
+// cases run concurrently with --jobs > 1. Quick: Wo = 10
 // to t = 0.05 s: the profile, and the leaflets opening with the forward flow.
 #include "suites/valve_suite.hpp"
 
@@ -16,11 +17,13 @@
 #include "metrics/signal_metrics.hpp"
 #include "observers/snapshot.hpp"
 #include "suites/scene_run.hpp"
+#include "sweep/sweep.hpp"
 
 #include <fmt/format.h>
 
 #include <cmath>
 #include <map>
+#include <mutex>
 
 namespace mrsph::verification {
 
@@ -43,7 +46,7 @@ WomersleyProfile inflow_profile(const LoadedScene& scene) {
   return w;
 }
 
-ValveResult run_case(const SuiteContext& ctx, double wo, double end_time, SuiteSummary& summary) {
+ValveResult run_case(const SuiteContext& ctx, double wo, double end_time, SuiteRun& record) {
   if (ctx.log) ctx.log(fmt::format("valve: Wo = {:g} to t = {:g} s", wo, end_time));
   ValveResult out{wo};
   CsvTable frame;
@@ -104,7 +107,6 @@ ValveResult run_case(const SuiteContext& ctx, double wo, double end_time, SuiteS
       m["mean_x_mm"] = sx->mean;
     }
   }
-  SuiteRun record;
   record.case_name = fmt::format("Wo={:g}", wo);
   record.config = {{"womersley_number", wo}, {"end_time", end_time}, {"inflow_period", T},
                    {"kinematic_viscosity", run.scene.parameters.at("nu")}, {"scene", "venous_valve.json"}};
@@ -112,7 +114,6 @@ ValveResult run_case(const SuiteContext& ctx, double wo, double end_time, SuiteS
   record.cost = cost_json(run);
   record.diverged = out.diverged;
   record.divergence = divergence_record(run);
-  summary.add_run(std::move(record));
   return out;
 }
 
@@ -124,8 +125,26 @@ SuiteSummary run_valve_suite(const SuiteContext& ctx) {
   SuiteSummary summary("valve", ctx.quick, ctx.threads);
   const std::vector<double> numbers = ctx.quick ? std::vector<double>{10.0} : std::vector<double>{1.0, 5.0, 10.0};
   const double end_time = ctx.quick ? 0.05 : 2.0;
+  // The cases are independent: with --jobs > 1 they run concurrently, one thread each.
+  std::vector<ValveResult> outcomes(numbers.size());
+  std::vector<SuiteRun> records(numbers.size());
+  std::mutex log_mutex;
+  SuiteContext case_ctx = ctx;
+  if (ctx.log) case_ctx.log = [&](const std::string& line) {
+    std::lock_guard lock(log_mutex);
+    ctx.log(line);
+  };
+  const auto run_one = [&](std::size_t k) { outcomes[k] = run_case(case_ctx, numbers[k], end_time, records[k]); };
+  if (ctx.jobs > 1 && numbers.size() > 1) {
+    run_concurrently(numbers.size(), ctx.jobs, run_one);
+  } else {
+    for (std::size_t k = 0; k < numbers.size(); ++k) run_one(k);
+  }
   std::map<double, ValveResult> results;
-  for (double wo : numbers) results.emplace(wo, run_case(ctx, wo, end_time, summary));
+  for (std::size_t k = 0; k < numbers.size(); ++k) {
+    summary.add_run(std::move(records[k]));
+    results.emplace(numbers[k], outcomes[k]);
+  }
 
   for (const auto& [wo, r] : results) {
     const std::string tag = fmt::format("Wo={:g}", wo);

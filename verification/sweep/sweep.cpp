@@ -116,35 +116,37 @@ std::string sweep_key(const SuiteContext& ctx, const SweepRun& run) {
   return fmt::format("{}-{:016x}", std::filesystem::path(run.scene).stem().string(), hash);
 }
 
-std::vector<SweepOutcome> run_sweep(const SuiteContext& ctx, const std::vector<SweepRun>& runs, int jobs) {
-  const std::filesystem::path cache = sweep_cache(ctx);
-  std::vector<SweepOutcome> outcomes(runs.size());
-  std::vector<bool> reused(runs.size(), false);
+void run_concurrently(std::size_t count, int jobs, const std::function<void(std::size_t)>& task) {
   std::atomic<std::size_t> next{0};
-  std::mutex log_mutex;
   auto worker = [&] {
-    tbb::task_arena single(1);  // each run single-threaded; concurrency comes from running several
-    for (std::size_t k; (k = next++) < runs.size();) {
-      const std::string key = sweep_key(ctx, runs[k]);
-      const std::filesystem::path dir = cache / key;
-      if (complete_outputs(dir)) {
-        reused[k] = true;
-      } else {
-        if (ctx.log) {
-          std::lock_guard lock(log_mutex);
-          ctx.log("sweep: " + runs[k].label);
-        }
-        single.execute([&] { execute(ctx, runs[k], dir); });
-      }
-      outcomes[k] = read_outcome(runs[k], key, dir);
-      outcomes[k].reused = reused[k];
-    }
+    tbb::task_arena single(1);  // each task single-threaded; concurrency comes from running several
+    for (std::size_t k; (k = next++) < count;) single.execute([&] { task(k); });
   };
-  const int workers = std::max(1, std::min<int>(jobs, static_cast<int>(runs.size())));
+  const int workers = std::max(1, std::min<int>(jobs, static_cast<int>(count)));
   std::vector<std::thread> pool;
   for (int w = 1; w < workers; ++w) pool.emplace_back(worker);
   worker();
   for (auto& t : pool) t.join();
+}
+
+std::vector<SweepOutcome> run_sweep(const SuiteContext& ctx, const std::vector<SweepRun>& runs, int jobs) {
+  const std::filesystem::path cache = sweep_cache(ctx);
+  std::vector<SweepOutcome> outcomes(runs.size());
+  std::mutex log_mutex;
+  run_concurrently(runs.size(), jobs, [&](std::size_t k) {
+    const std::string key = sweep_key(ctx, runs[k]);
+    const std::filesystem::path dir = cache / key;
+    const bool reused = complete_outputs(dir);
+    if (!reused) {
+      if (ctx.log) {
+        std::lock_guard lock(log_mutex);
+        ctx.log("sweep: " + runs[k].label);
+      }
+      execute(ctx, runs[k], dir);
+    }
+    outcomes[k] = read_outcome(runs[k], key, dir);
+    outcomes[k].reused = reused;
+  });
   return outcomes;
 }
 

@@ -15,6 +15,7 @@
 #include "suites/suite.hpp"
 
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -48,6 +49,9 @@ std::string sweep_key(const SuiteContext& ctx, const SweepRun& run);
 std::filesystem::path sweep_cache(const SuiteContext& ctx);  // out_dir/../cache (shared by the suites of a run)
 
 std::vector<SweepOutcome> run_sweep(const SuiteContext& ctx, const std::vector<SweepRun>& runs, int jobs);
+// Calls task(0) ... task(count - 1), up to `jobs` at a time, each on one thread of its own (a task
+// arena of one), and returns when all are done.
+void run_concurrently(std::size_t count, int jobs, const std::function<void(std::size_t)>& task);
 // Reads the outcomes from the cache; a run with no outputs there is an outcome with `failure` set.
 std::vector<SweepOutcome> load_sweep(const SuiteContext& ctx, const std::vector<SweepRun>& runs);
 // Writes commands.txt (one `mrsph run` per line: `parallel < commands.txt`) and slurm_array.sh.
