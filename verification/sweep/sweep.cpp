@@ -10,6 +10,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <exception>
 #include <fstream>
 #include <mutex>
 #include <sstream>
@@ -118,15 +119,25 @@ std::string sweep_key(const SuiteContext& ctx, const SweepRun& run) {
 
 void run_concurrently(std::size_t count, int jobs, const std::function<void(std::size_t)>& task) {
   std::atomic<std::size_t> next{0};
+  std::exception_ptr first_error;  // an exception may not leave a thread: kept, rethrown after the join
+  std::mutex error_mutex;
   auto worker = [&] {
     tbb::task_arena single(1);  // each task single-threaded; concurrency comes from running several
-    for (std::size_t k; (k = next++) < count;) single.execute([&] { task(k); });
+    for (std::size_t k; (k = next++) < count;) {
+      try {
+        single.execute([&] { task(k); });
+      } catch (...) {
+        std::lock_guard lock(error_mutex);
+        if (!first_error) first_error = std::current_exception();
+      }
+    }
   };
   const int workers = std::max(1, std::min<int>(jobs, static_cast<int>(count)));
   std::vector<std::thread> pool;
   for (int w = 1; w < workers; ++w) pool.emplace_back(worker);
   worker();
   for (auto& t : pool) t.join();
+  if (first_error) std::rethrow_exception(first_error);
 }
 
 std::vector<SweepOutcome> run_sweep(const SuiteContext& ctx, const std::vector<SweepRun>& runs, int jobs) {

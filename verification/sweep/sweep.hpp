@@ -50,7 +50,7 @@ std::filesystem::path sweep_cache(const SuiteContext& ctx);  // out_dir/../cache
 
 std::vector<SweepOutcome> run_sweep(const SuiteContext& ctx, const std::vector<SweepRun>& runs, int jobs);
 // Calls task(0) ... task(count - 1), up to `jobs` at a time, each on one thread of its own (a task
-// arena of one), and returns when all are done.
+// arena of one), and returns when all are done; the first exception a task threw is rethrown then.
 void run_concurrently(std::size_t count, int jobs, const std::function<void(std::size_t)>& task);
 // Reads the outcomes from the cache; a run with no outputs there is an outcome with `failure` set.
 std::vector<SweepOutcome> load_sweep(const SuiteContext& ctx, const std::vector<SweepRun>& runs);
