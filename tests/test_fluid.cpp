@@ -1,3 +1,4 @@
+#include "boundary/womersley_profile.hpp"
 #include "fluid/viscous_force.hpp"
 #include "scene_fixture.hpp"
 #include "simulation/runner.hpp"
@@ -120,7 +121,9 @@ TEST_CASE("Initial relaxation fills the voids a slanted wall leaves in the fluid
       "parameters": {"dp": 0.05, "t": 0.5773502691896257},
       "domain": {"lower": [0, -0.3], "upper": [2, 1.3], "periodic": [true, false]},
       "fluid": {"dp": "dp", "density": 1000, "sound_speed": 10, "relaxation_steps": )" + std::to_string(steps) + R"(,
-                "initial_velocity": {"type": "uniform", "value": [0.5, 0]},
+                "initial_velocity": {"type": "womersley", "bottom": 0, "height": 1, "pressure_gradient_amplitude": 1,
+                                     "angular_frequency": 6.283185307179586, "density": 1000, "kinematic_viscosity": 0.01,
+                                     "time": 0.1},
                 "region": {"difference": {"base": {"rectangle": {"lower": [0, 0], "upper": [2, 1]}},
                            "subtract": [{"polygon": {"vertices": [[0.5, 0], [1.5, 0], [1.5, "t"]]}}]}}},
       "walls": [{"name": "floor", "dp": "dp", "region": {"union": [
@@ -140,6 +143,12 @@ TEST_CASE("Initial relaxation fills the voids a slanted wall leaves in the fluid
   REQUIRE(before > 0.05);        // the test is only meaningful if the cut lattice has voids
   REQUIRE(after < 0.5 * before);
   const FluidParticles& f = relaxed.simulation->fluid().particles;
+  WomersleyProfile profile;  // the scene's initial velocity field
+  profile.channel_height = 1.0;
+  profile.pressure_gradient_amplitude = 1.0;
+  profile.angular_frequency = 6.283185307179586;
+  profile.density = 1000.0;
+  profile.kinematic_viscosity = 0.01;
   // Inside the wall's region by less than half a spacing (where the wall's first particles sit; at
   // the ramp's acute tip the region is thinner than a spacing and has no particles).
   const double slope = 0.5773502691896257, cos30 = 0.8660254037844386, half_dp = 0.025;
@@ -147,6 +156,7 @@ TEST_CASE("Initial relaxation fills the voids a slanted wall leaves in the fluid
     const Vec2& p = f.pos[i];
     REQUIRE(p.y() > -half_dp);
     if (p.x() > 0.5 && p.x() < 1.5) REQUIRE((slope * (p.x() - 0.5) - p.y()) * cos30 < half_dp);
-    REQUIRE(f.vel[i].x() == 0.5);
+    REQUIRE(f.vel[i].x() == Approx(profile.velocity(p.y(), 0.1)).epsilon(1e-12));  // u(y) at the relaxed y
+    REQUIRE(f.vel[i].y() == 0.0);
   }
 }
