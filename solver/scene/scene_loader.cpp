@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace mrsph {
@@ -336,6 +337,26 @@ LoadedScene build_scene(const Json& document, const std::string& file, const Sce
   }
   if (!sim->has_fluid() && sim->solids().empty())
     root.fail("", "the scene has neither a fluid nor a solid body: nothing to simulate");
+  for (const SceneNode& node : root.children("solid_contacts")) {
+    const Json list = node.has("bodies") ? node.raw().at("bodies") : Json();
+    if (!list.is_array() || list.size() != 2 || !list[0].is_string() || !list[1].is_string())
+      node.fail("bodies", "expected the names of two solid bodies, e.g. [\"leaflet_top\", \"leaflet_bottom\"]");
+    SolidContact contact;
+    for (int k = 0; k < 2; ++k) {
+      const std::string name = list[k].get<std::string>();
+      const auto& solids = sim->solids();
+      const auto it = std::find_if(solids.begin(), solids.end(), [&](const SolidBody& s) { return s.name == name; });
+      if (it == solids.end()) node.fail("bodies", "'" + name + "' is not a solid body of this scene");
+      (k == 0 ? contact.first : contact.second) = static_cast<std::size_t>(it - solids.begin());
+    }
+    if (contact.first == contact.second) node.fail("bodies", "a contact needs two different bodies (self-contact is not modelled)");
+    for (const SolidContact& other : sim->solid_contacts)
+      if (std::minmax(other.first, other.second) == std::minmax(contact.first, contact.second))
+        node.fail("bodies", "this pair of bodies already has a contact");
+    contact.stiffness = node.positive_or("stiffness", 0.0);
+    node.finish();
+    sim->solid_contacts.push_back(contact);
+  }
 
   {  // A periodic axis must hold three kernel supports, or the cell list would see a particle twice.
     Real reach = 0.0;
@@ -411,6 +432,9 @@ LoadedScene build_scene(const Json& document, const std::string& file, const Sce
                                                                          : SolidKinematics::Averaged;
     node->finish();
   }
+  if (schedule_name == "multi_step_velocity_verlet" && !sim->solid_contacts.empty())
+    root.fail("solid_contacts", "solid contacts are integrated by the position-based Verlet schedules only; "
+                                "choose multi_step_position_verlet or single_step_position_verlet");
   scene.schedule = make_schedule(schedule_name);
 
   if (const auto node = root.optional_child("limits")) {

@@ -43,6 +43,12 @@ void Simulation::initialise() {
     wall.particles.normal = normals_from_kernel_gradient(wall.particles.vol, inner);
   }
   for (SolidBody& solid : solids_) initialise_solid(solid);
+  for (SolidContact& contact : solid_contacts) {
+    if (contact.first >= solids_.size() || contact.second >= solids_.size() || contact.first == contact.second)
+      throw std::logic_error("Simulation: a solid contact must join two different solid bodies");
+    prepare_solid_contact(contact, solids_[contact.first], solids_[contact.second]);
+    solids_[contact.first].in_contact = solids_[contact.second].in_contact = true;
+  }
 
   if (!fluid_) return;
   for (const WallBody& wall : walls_) {

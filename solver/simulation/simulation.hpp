@@ -10,6 +10,7 @@
 #include "fluid/fluid_body.hpp"
 #include "neighbor/domain_box.hpp"
 #include "solid/solid_body.hpp"
+#include "solid/solid_contact.hpp"
 
 #include <optional>
 #include <string>
@@ -70,6 +71,8 @@ class Simulation {
   bool body_force_on_solids = true;
   std::optional<InflowBuffer> inflow;
   SolidKinematics solid_kinematics = SolidKinematics::Averaged;
+  // Contacts between solid bodies (set before initialise()); with any, all solids sub-step together.
+  std::vector<SolidContact> solid_contacts;
   DivergenceLimits limits;
 
   Real time = 0.0;

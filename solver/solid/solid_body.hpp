@@ -59,7 +59,8 @@ struct SolidBody {
   std::vector<Index> active;
   std::optional<RigidRegion> rigid;
   std::vector<Tether> tethers;
-  Vec2Array external_force;  // tether forces of the current sub-step, per particle
+  Vec2Array external_force;  // tether and contact forces of the current sub-step, per particle
+  bool in_contact = false;   // has a contact with another solid (solid_contact.hpp)
 
   SolidBody(std::string body_name, Real spacing, Real h_over_dp, ElasticMaterial elastic)
       : name(std::move(body_name)), dp(spacing), kernel(h_over_dp * spacing), material(std::move(elastic)) {}

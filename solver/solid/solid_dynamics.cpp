@@ -2,6 +2,7 @@
 
 #include "core/parallel.hpp"
 #include "geometry/particle_normals.hpp"
+#include "solid/solid_contact.hpp"
 #include "time/step_splitting.hpp"
 
 #include <algorithm>
@@ -173,13 +174,20 @@ void project_rigid(SolidBody& solid) {
   }
 }
 
-// v += dt a with a = (f + F^prior + tethers)/m + g; r += dt/2 v. Returns the criterion's rate.
+bool uses_external_force(const SolidBody& solid) { return solid.rigid || !solid.tethers.empty() || solid.in_contact; }
+
+// external_force of the current state: tethers here, contacts added by the caller.
+void begin_external_forces(SolidBody& solid) {
+  if (!uses_external_force(solid)) return;
+  std::fill(solid.external_force.begin(), solid.external_force.end(), Vec2::Zero());
+  apply_tethers(solid);
+}
+
+// v += dt a with a = (f + F^prior + external)/m + g; r += dt/2 v. Returns the criterion's rate.
 Real momentum_pass(SolidBody& solid, Real dt, const Vec2& g) {
   SolidParticles& s = solid.particles;
-  if (solid.rigid || !solid.tethers.empty()) {
+  if (uses_external_force(solid)) {
     // Accelerations first, then the constraints (they need all of them), then the update.
-    std::fill(solid.external_force.begin(), solid.external_force.end(), Vec2::Zero());
-    apply_tethers(solid);
     parallel_for_each(solid.active.size(), [&](std::size_t k) {
       const Index a = solid.active[k];
       if (s.constrained[a]) {
@@ -233,25 +241,58 @@ void deformation_pass(SolidBody& solid, Real h_end, Real h_next, Real eta) {
 
 }  // namespace
 
-long long advance_solid(SolidBody& solid, Real t, Real dt, const std::function<Vec2(Real)>& body_acceleration) {
-  const Real eta = damping_viscosity(solid);
-  const Real rate0 = parallel_max(solid.active.size(), [&](std::size_t k) { return particle_rate(solid, solid.active[k]); }, 0.0);
-  SplitStep step = split_remaining(dt, criterion_from_rate(solid, rate0));
-  half_step(solid, 0.5 * step.size, eta);
+long long advance_solids(std::span<SolidBody> solids, std::span<SolidContact> contacts, Real t, Real dt,
+                         const std::function<Vec2(Real)>& body_acceleration) {
+  const std::size_t n = solids.size();
+  if (n == 0) return 0;
+  std::vector<Real> eta(n), rate(n);
+  for (std::size_t b = 0; b < n; ++b) {
+    const SolidBody& solid = solids[b];
+    eta[b] = damping_viscosity(solid);
+    rate[b] = parallel_max(solid.active.size(), [&](std::size_t k) { return particle_rate(solid, solid.active[k]); }, 0.0);
+  }
+  // One sub-step for all the bodies, the smallest of their criteria.
+  const auto criterion = [&] {
+    Real c = std::numeric_limits<Real>::infinity();
+    for (std::size_t b = 0; b < n; ++b) c = std::min(c, criterion_from_rate(solids[b], rate[b]));
+    return c;
+  };
+  // A bound on a body's speed from its rate: rate >= (c + |v|) / h.
+  const auto speed_bound = [&](std::size_t b) {
+    return std::max(Real(0), rate[b] * solids[b].h() - solids[b].material.sound_speed());
+  };
+  const auto add_travel = [&](Real duration) {
+    for (SolidContact& c : contacts) c.travel += duration * (speed_bound(c.first) + speed_bound(c.second));
+  };
+  SplitStep step = split_remaining(dt, criterion());
+  for (std::size_t b = 0; b < n; ++b) half_step(solids[b], 0.5 * step.size, eta[b]);
+  add_travel(0.5 * step.size);
   Real elapsed = 0.0;
   long long count = 0;
   for (;;) {
-    const Real rate = momentum_pass(solid, step.size, body_acceleration(t + elapsed + 0.5 * step.size));
+    const Vec2 g = body_acceleration(t + elapsed + 0.5 * step.size);
+    for (SolidBody& solid : solids) begin_external_forces(solid);
+    for (SolidContact& c : contacts) {
+      refresh_contact_candidates(c, solids[c.first], solids[c.second]);
+      add_contact_forces(c, solids[c.first], solids[c.second]);
+    }
+    for (std::size_t b = 0; b < n; ++b) rate[b] = momentum_pass(solids[b], step.size, g);
+    add_travel(0.5 * step.size);
     elapsed += step.size;
     ++count;
     if (step.last) {
-      deformation_pass(solid, 0.5 * step.size, 0.0, eta);
-      return count;
+      for (std::size_t b = 0; b < n; ++b) deformation_pass(solids[b], 0.5 * step.size, 0.0, eta[b]);
+      return count * static_cast<long long>(n);
     }
-    const SplitStep next = split_remaining(dt - elapsed, criterion_from_rate(solid, rate));
-    deformation_pass(solid, 0.5 * step.size, 0.5 * next.size, eta);
+    const SplitStep next = split_remaining(dt - elapsed, criterion());
+    for (std::size_t b = 0; b < n; ++b) deformation_pass(solids[b], 0.5 * step.size, 0.5 * next.size, eta[b]);
+    add_travel(0.5 * next.size);
     step = next;
   }
+}
+
+long long advance_solid(SolidBody& solid, Real t, Real dt, const std::function<Vec2(Real)>& body_acceleration) {
+  return advance_solids(std::span<SolidBody>(&solid, 1), {}, t, dt, body_acceleration);
 }
 
 void solid_substep_velocity_verlet(SolidBody& solid, Real dt, const Vec2& body_acceleration) {

@@ -9,6 +9,9 @@
 #pragma once
 
 #include "solid/solid_body.hpp"
+#include "solid/solid_contact.hpp"
+
+#include <span>
 
 #include <functional>
 
@@ -29,6 +32,12 @@ Real solid_time_step(const SolidBody& solid);
 // r = r0 and v = 0; their F still evolves. body_acceleration(t) is g at time t (sampled at the
 // middle of each sub-step). Returns the number of sub-steps.
 long long advance_solid(SolidBody& solid, Real t, Real dt, const std::function<Vec2(Real)>& body_acceleration);
+
+// The same for bodies in contact (solid_contact.hpp): all of them advance together, in sub-steps that
+// respect every body's criterion, and the contact forces join the external forces of each sub-step
+// (evaluated at its middle, like the internal forces). Returns the sub-steps summed over the bodies.
+long long advance_solids(std::span<SolidBody> solids, std::span<SolidContact> contacts, Real t, Real dt,
+                         const std::function<Vec2(Real)>& body_acceleration);
 
 // The operators a sub-step is made of, exposed for tests and diagnostics:
 // dF/dt of every particle from the current velocities.

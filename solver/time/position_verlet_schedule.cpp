@@ -20,13 +20,24 @@ long long integrate_solid_over(SolidBody& solid, const Simulation& sim, Real t, 
   });
 }
 
+long long integrate_solids_over(Simulation& sim, Real t, Real dt) {
+  if (sim.solid_contacts.empty()) {
+    long long count = 0;
+    for (SolidBody& solid : sim.solids()) count += integrate_solid_over(solid, sim, t, dt);
+    return count;
+  }
+  return advance_solids(sim.solids(), sim.solid_contacts, t, dt, [&](Real time) {
+    return sim.body_force_on_solids ? sim.body_force.at(time) : Vec2::Zero();
+  });
+}
+
 Real PositionVerletSchedule::advance_solids_only(Simulation& sim, Real max_step) {
   // Without a fluid an "advection step" is a batch of solid steps; 200 keeps progress and the
   // divergence checks frequent.
   Real criterion = std::numeric_limits<Real>::infinity();
   for (const SolidBody& solid : sim.solids()) criterion = std::min(criterion, solid_time_step(solid));
   const Real Dt = std::min(max_step, 200.0 * criterion);
-  for (SolidBody& solid : sim.solids()) sim.steps.solid += integrate_solid_over(solid, sim, sim.time, Dt);
+  sim.steps.solid += integrate_solids_over(sim, sim.time, Dt);
   sim.time += Dt;
   ++sim.steps.acoustic;
   sim.check_divergence();
@@ -61,11 +72,9 @@ Real PositionVerletSchedule::advance(Simulation& sim, Real max_step) {
     for (std::size_t s = 0; s < sim.solids().size(); ++s)
       set_force_from_fluid(sim.solid_contact(s), sim.solids()[s].particles);
     acoustic_second_half(fluid, inner, contacts, dt);
-    for (SolidBody& solid : sim.solids()) {
-      begin_kinematics_average(solid.particles);
-      sim.steps.solid += integrate_solid_over(solid, sim, sim.time, dt);
-      end_kinematics_average(solid.particles, dt, sim.solid_kinematics);
-    }
+    for (SolidBody& solid : sim.solids()) begin_kinematics_average(solid.particles);
+    sim.steps.solid += integrate_solids_over(sim, sim.time, dt);
+    for (SolidBody& solid : sim.solids()) end_kinematics_average(solid.particles, dt, sim.solid_kinematics);
     elapsed += dt;
     sim.time = last ? t0 + Dt : t0 + elapsed;
     if (sim.inflow) sim.inflow->apply(fluid.particles, sim.time, sim.box());

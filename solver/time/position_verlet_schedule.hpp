@@ -21,5 +21,8 @@ class PositionVerletSchedule final : public Schedule {
 // Integrates a solid over [t, t + dt] in sub-steps that respect its criterion and sum to dt
 // exactly (paper Eqs. 39-41). Returns the number of sub-steps.
 long long integrate_solid_over(SolidBody& solid, const Simulation& sim, Real t, Real dt);
+// All the simulation's solids over [t, t + dt]: one by one, or together when some are in contact.
+// Returns the sub-steps summed over the bodies.
+long long integrate_solids_over(Simulation& sim, Real t, Real dt);
 
 }  // namespace mrsph
