@@ -2,6 +2,8 @@
 
 #include "fsi/fluid_solid_coupling.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 #include <stdexcept>
 
@@ -20,6 +22,18 @@ PointObserver::PointObserver(ObserverSpec spec, const Simulation& sim) : spec_(s
         throw std::invalid_argument("observer '" + spec_.name + "': no wall or solid body named '" + body + "'");
       contact_indices_.push_back(k);
     }
+    return;
+  }
+  if (spec_.quantity == ObservedQuantity::Gap) {
+    target_ = Target::SolidPair;
+    if (spec_.bodies.size() != 2) throw std::invalid_argument("observer '" + spec_.name + "': a gap is between two solid bodies");
+    const auto solid_named = [&](const std::string& body) {
+      for (std::size_t s = 0; s < sim.solids().size(); ++s)
+        if (sim.solids()[s].name == body) return s;
+      throw std::invalid_argument("observer '" + spec_.name + "': no solid body named '" + body + "'");
+    };
+    solid_index_ = solid_named(spec_.bodies[0]);
+    other_solid_index_ = solid_named(spec_.bodies[1]);
     return;
   }
   const std::string& body = spec_.bodies.front();
@@ -77,6 +91,7 @@ std::vector<std::string> PointObserver::columns() const {
     case ObservedQuantity::Pressure: return {"p"};
     case ObservedQuantity::Force: return {"fx", "fy"};
     case ObservedQuantity::Front: return {"front"};
+    case ObservedQuantity::Gap: return {"gap"};
   }
   return {};
 }
@@ -86,6 +101,14 @@ std::vector<Real> PointObserver::sample(const Simulation& sim) const {
     Vec2 total = Vec2::Zero();
     for (std::size_t k : contact_indices_) total += total_force_on_boundary(sim.fluid_contacts()[k]);
     return {total.x(), total.y()};
+  }
+  if (target_ == Target::SolidPair) {
+    const Vec2Array& a = sim.solids()[solid_index_].particles.pos;
+    const Vec2Array& b = sim.solids()[other_solid_index_].particles.pos;
+    Real closest = std::numeric_limits<Real>::infinity();
+    for (const Vec2& p : a)
+      for (const Vec2& q : b) closest = std::min(closest, (p - q).squaredNorm());
+    return {std::sqrt(closest)};
   }
   if (target_ == Target::Solid) {
     const SolidParticles& p = sim.solids()[solid_index_].particles;

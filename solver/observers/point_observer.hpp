@@ -8,6 +8,9 @@
 //   boundary bodies, "force": the total force of the fluid on the listed wall and solid bodies.
 //   fluid body, "front": the largest coordinate of the fluid particles along a direction (the
 //     surge front of a dam break), max_i r_i . d.
+//   two solid bodies, "gap": the smallest distance between a particle of one and a particle of the
+//     other (bodies in contact keep it near one solid spacing; less than half of one means they are
+//     passing into each other). All pairs are compared: meant for small bodies such as leaflets.
 #pragma once
 
 #include "simulation/simulation.hpp"
@@ -17,11 +20,11 @@
 
 namespace mrsph {
 
-enum class ObservedQuantity { Position, Displacement, Velocity, Pressure, Force, Front };
+enum class ObservedQuantity { Position, Displacement, Velocity, Pressure, Force, Front, Gap };
 
 struct ObserverSpec {
   std::string name;
-  std::vector<std::string> bodies;  // one body, or several for "force"
+  std::vector<std::string> bodies;  // one body, several for "force", two for "gap"
   Vec2 point = Vec2::Zero();
   Vec2 direction = Vec2(1.0, 0.0);  // for "front"
   ObservedQuantity quantity = ObservedQuantity::Position;
@@ -39,10 +42,11 @@ class PointObserver {
   std::vector<Real> sample(const Simulation& sim) const;
 
  private:
-  enum class Target { Fluid, Solid, Boundaries };
+  enum class Target { Fluid, Solid, Boundaries, SolidPair };
   ObserverSpec spec_;
   Target target_ = Target::Fluid;
   std::size_t solid_index_ = 0;
+  std::size_t other_solid_index_ = 0;  // gap: the second body
   std::vector<std::size_t> contact_indices_;
   std::vector<Index> particles_;  // solid: fixed material particles
   std::vector<Real> weights_;

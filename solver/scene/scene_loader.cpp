@@ -281,12 +281,13 @@ void check_periodic_seams(const std::vector<PlacedBody>& bodies, const DomainBox
 }
 
 ObservedQuantity read_quantity(const SceneNode& node) {
-  const std::string q = node.choice("quantity", {"position", "displacement", "velocity", "pressure", "force", "front"});
+  const std::string q = node.choice("quantity", {"position", "displacement", "velocity", "pressure", "force", "front", "gap"});
   if (q == "position") return ObservedQuantity::Position;
   if (q == "displacement") return ObservedQuantity::Displacement;
   if (q == "velocity") return ObservedQuantity::Velocity;
   if (q == "pressure") return ObservedQuantity::Pressure;
   if (q == "front") return ObservedQuantity::Front;
+  if (q == "gap") return ObservedQuantity::Gap;
   return ObservedQuantity::Force;
 }
 
@@ -464,7 +465,7 @@ LoadedScene build_scene(const Json& document, const std::string& file, const Sce
       spec.bodies.push_back(node.text("body"));
     }
     if (spec.quantity == ObservedQuantity::Front) spec.direction = node.vec2_or("direction", spec.direction);
-    else if (spec.quantity != ObservedQuantity::Force) spec.point = node.vec2("point");
+    else if (spec.quantity != ObservedQuantity::Force && spec.quantity != ObservedQuantity::Gap) spec.point = node.vec2("point");
     spec.nearest_particle = node.flag_or("nearest_particle", false);
     node.finish();
     scene.observers.push_back(std::move(spec));

@@ -1,6 +1,7 @@
 // verify --suite valve: pulsatile flow through venous valve leaflets (paper section 4.3), Wo = 1, 5, 10.
 // Checks the paper states: the leaflets oscillate with the period of the inflow, with an amplitude
-// that grows with Wo; and that the inflow boundary imposes the analytic Womersley profile.
+// that grows with Wo; and that the inflow boundary imposes the analytic Womersley profile; and that the
+// leaflets, in contact, never pass into each other (closest particles at least half a solid spacing).
 //   inflow     centre-line velocity in the buffer against the analytic profile (relative RMS)
 //   leaflets   free end of the top leaflet after the first period: the period of its main motion
 //              (the displacement component with the larger range), counted as switches between
@@ -86,6 +87,13 @@ ValveResult run_case(const SuiteContext& ctx, double wo, double end_time, SuiteR
       }
       m["inflow_centre_relative_rms"] = r2 > 0 ? std::sqrt(e2 / r2) : NAN;
     }
+    if (s.name == "leaflet_gap") {  // smallest distance between the leaflets' particles, in solid spacings
+      double closest = INFINITY, at = 0.0;
+      for (std::size_t k = 0; k < s.time.size(); ++k)
+        if (s.values[k][0] < closest) { closest = s.values[k][0]; at = s.time[k]; }
+      m["closest_leaflet_gap_dp"] = closest / run.scene.parameters.at("dp_solid");
+      m["closest_leaflet_gap_time_s"] = at;
+    }
     if (s.name != "top_tip") continue;
     std::vector<double> dx, dy;
     for (const auto& row : s.values) { dx.push_back(1000.0 * row[0]); dy.push_back(1000.0 * row[1]); }
@@ -157,6 +165,10 @@ SuiteSummary run_valve_suite(const SuiteContext& ctx) {
     // particles move between resets: 2 %.
     summary.check_at_most(tag + " inflow centre velocity against the analytic Womersley profile (relative RMS)",
                           metric(r, "inflow_centre_relative_rms"), 0.02, "CASES.md section 3 (GSL, erratum applied)");
+    // The solid contact starts at one solid spacing; closer than half of one, the leaflets would be
+    // passing into each other (they did, without the contact, at every flow reversal).
+    summary.check_range(tag + " leaflets stay apart: closest distance between their particles [dp_S]",
+                        metric(r, "closest_leaflet_gap_dp"), 0.5, 1e9, "solid contact (solid_contact.hpp)");
     if (ctx.quick) {
       summary.check_range(tag + " top leaflet opens with the forward flow: dy at t = 0.05 s [mm]", metric(r, "final_dy_mm"),
                           1e-3, 10.0, "the forward flow of the first quarter period pushes the leaflets apart");
