@@ -100,6 +100,10 @@ TEST_CASE("Overrides replace values by path, and refuse unknown paths", "[scene]
   CHECK_THROWS_WITH(apply_override(doc, "fluidd.dp=1", "t"), Catch::Contains("no key 'fluidd'"));
   CHECK_THROWS_WITH(apply_override(doc, "walls[7].dp=1", "t"), Catch::Contains("no element [7]"));
   CHECK_THROWS_WITH(apply_override(doc, "nonsense", "t"), Catch::Contains("path=value"));
+  // null removes an optional key; removing one that is not there is an error.
+  apply_override(doc, "fluid.transport_velocity_alpha=null", "t");
+  CHECK(!doc["fluid"].contains("transport_velocity_alpha"));
+  CHECK_THROWS_WITH(apply_override(doc, "fluid.transport_velocity_alpha=null", "t"), Catch::Contains("no key 'transport_velocity_alpha' to remove"));
 }
 
 TEST_CASE("A scene needing more particles than the limit is refused before allocation", "[scene]") {

@@ -42,7 +42,8 @@ struct LoadedScene {
 
 // Reads and parses a scene file; InputError on a missing file or invalid JSON (with line/column).
 Json read_scene_document(const std::filesystem::path& path);
-// Applies "path=value" (path with '.' and [index]; value parsed as JSON, else taken as a string).
+// Applies "path=value" (path with '.' and [index]; value parsed as JSON, else taken as a string);
+// "path=null" removes an optional key (an inflow, say).
 void apply_override(Json& document, const std::string& assignment, const std::string& file);
 // Builds the simulation (particles generated, relations built, initialised).
 LoadedScene build_scene(const Json& document, const std::string& file, const SceneLimits& limits = {});

@@ -98,6 +98,12 @@ void apply_override(Json& document, const std::string& assignment, const std::st
   for (std::size_t s = 0; s < steps.size(); ++s) {
     const bool last = s + 1 == steps.size();
     const PathStep& step = steps[s];
+    if (last && value.is_null() && !step.key.empty()) {  // key=null removes an optional key
+      if (!node->is_object() || !node->contains(step.key))
+        throw InputError(file, path, "override path: no key '" + step.key + "' to remove");
+      node->erase(step.key);
+      return;
+    }
     if (step.key.empty()) {
       if (!node->is_array() || step.index >= node->size())
         throw InputError(file, path, "override path: no element [" + std::to_string(step.index) + "] here");
