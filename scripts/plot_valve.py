@@ -1,27 +1,33 @@
-"""Figures of the valve suite: the free end of the top leaflet against time for each Wo, and the
-leaflets (coloured by von Mises stress) with the fluid velocity at the end of the run."""
+"""Figures of the valve suite: the free end of the top leaflet and the closest distance between the
+two leaflets against time for each Wo, and the leaflets (coloured by von Mises stress) with the fluid
+velocity at the end of the run."""
 import os
 
 from plot_common import load_summary, plt, read_csv, save, suite_dir
 
 directory = suite_dir()
 summary = load_summary(directory)
-fig, (ax_x, ax_y) = plt.subplots(2, 1, figsize=(9, 6), sharex=True)
+fig, (ax_x, ax_y, ax_gap) = plt.subplots(3, 1, figsize=(9, 8.5), sharex=True)
 for run in summary["runs"]:
     wo = run["config"]["womersley_number"]
     tip = read_csv(os.path.join(directory, f"Wo{wo:g}", "top_tip.csv"))
     ax_x.plot(tip["time"], [1000 * v for v in tip["dx"]], label=f"Wo = {wo:g}")
     ax_y.plot(tip["time"], [1000 * v for v in tip["dy"]], label=f"Wo = {wo:g}")
+    gap_file = os.path.join(directory, f"Wo{wo:g}", "leaflet_gap.csv")
+    if os.path.exists(gap_file):
+        gap = read_csv(gap_file)
+        ax_gap.plot(gap["time"], [1000 * v for v in gap["gap"]], label=f"Wo = {wo:g}")
 period = summary["runs"][0]["config"]["inflow_period"]
 t_end = summary["runs"][0]["config"]["end_time"]
 k = 1
 while k * period <= t_end:
-    for ax in (ax_x, ax_y):
+    for ax in (ax_x, ax_y, ax_gap):
         ax.axvline(k * period, color="k", lw=0.5, ls=":")
     k += 1
 ax_x.set_ylabel("top leaflet tip, horizontal [mm]")
 ax_y.set_ylabel("top leaflet tip, vertical [mm]")
-ax_y.set_xlabel("t [s] (dotted: inflow periods)")
+ax_gap.set_ylabel("closest leaflet particles [mm]")
+ax_gap.set_xlabel("t [s] (dotted: inflow periods)")
 ax_x.legend(fontsize=8)
 save(fig, directory, "valve_tip.png")
 
