@@ -1,8 +1,8 @@
-// Contact between two elastic bodies: a penalty on the overlap of their particles. Not in the paper,
-// whose valve leaflets never meet in its figures; here two leaflets that close on each other would
-// otherwise pass through one another, since solids interact only through the fluid (reports/valve.md).
-// The same form as the paper's code uses for solid contact (a "contact density" of the other body
-// and a pressure from it); the kernel and stiffness below are this project's choices.
+// Contact between two elastic bodies: a penalty on the overlap of their particles. Not in the paper
+// (its examples do not describe one); here two valve leaflets that close on each other would otherwise
+// pass through one another, since solids interact only through the fluid (reports/valve.md). Of the
+// kind the paper's code uses for solid contact (a "contact density" summed over the other body, and a
+// pressure from it); the kernel, the force and the stiffness below are this project's choices.
 //   kernel      W_c: Wendland C2 with support one solid spacing (h_c = dp / 2), so the force starts when
 //               two particles' cells touch (centres dp apart) and the bodies keep no visible gap
 //   overlap     phi_a = sum_{b in the other body} V_b W_c(r_ab)            (dimensionless, 0 when apart)
@@ -16,14 +16,13 @@
 // interest (two blocks meeting at Mach 0.1 keep their closest particles 0.63 dp apart, at Mach 0.017
 // 0.76 dp; with k_c 1/500 of it they went through each other). Stability: during a hard contact the
 // acceleration term of the solid criterion (Eq. 34) shortens the sub-step; measured stable, energy kept
-// to 0.4 %, up to 20 rho0 c_S^2 (tests/test_solid_contact.cpp).
+// to 0.4 %, up to 20 rho0 c_S^2 (the collision of tests/test_solid_contact.cpp).
 #pragma once
 
 #include "kernel/wendland_c2.hpp"
 #include "solid/solid_body.hpp"
 
 #include <limits>
-#include <span>
 #include <utility>
 #include <vector>
 
