@@ -28,8 +28,7 @@ PointObserver::PointObserver(ObserverSpec spec, const Simulation& sim) : spec_(s
     target_ = Target::SolidPair;
     if (spec_.bodies.size() != 2) throw std::invalid_argument("observer '" + spec_.name + "': a gap is between two solid bodies");
     const auto solid_named = [&](const std::string& body) {
-      for (std::size_t s = 0; s < sim.solids().size(); ++s)
-        if (sim.solids()[s].name == body) return s;
+      if (const auto index = sim.solid_index(body)) return *index;
       throw std::invalid_argument("observer '" + spec_.name + "': no solid body named '" + body + "'");
     };
     solid_index_ = solid_named(spec_.bodies[0]);

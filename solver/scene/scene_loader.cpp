@@ -345,10 +345,9 @@ LoadedScene build_scene(const Json& document, const std::string& file, const Sce
     SolidContact contact;
     for (int k = 0; k < 2; ++k) {
       const std::string name = list[k].get<std::string>();
-      const auto& solids = sim->solids();
-      const auto it = std::find_if(solids.begin(), solids.end(), [&](const SolidBody& s) { return s.name == name; });
-      if (it == solids.end()) node.fail("bodies", "'" + name + "' is not a solid body of this scene");
-      (k == 0 ? contact.first : contact.second) = static_cast<std::size_t>(it - solids.begin());
+      const std::optional<std::size_t> index = sim->solid_index(name);
+      if (!index) node.fail("bodies", "'" + name + "' is not a solid body of this scene");
+      (k == 0 ? contact.first : contact.second) = *index;
     }
     if (contact.first == contact.second) node.fail("bodies", "a contact needs two different bodies (self-contact is not modelled)");
     for (const SolidContact& other : sim->solid_contacts)

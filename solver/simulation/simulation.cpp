@@ -31,6 +31,12 @@ SolidBody& Simulation::add_solid(SolidBody solid) {
   return solids_.back();
 }
 
+std::optional<std::size_t> Simulation::solid_index(const std::string& name) const {
+  for (std::size_t s = 0; s < solids_.size(); ++s)
+    if (solids_[s].name == name) return s;
+  return std::nullopt;
+}
+
 void Simulation::initialise() {
   if (initialised_) throw std::logic_error("Simulation: initialise() called twice");
   initialised_ = true;

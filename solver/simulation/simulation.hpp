@@ -57,6 +57,8 @@ class Simulation {
   const std::vector<WallBody>& walls() const { return walls_; }
   std::vector<SolidBody>& solids() { return solids_; }
   const std::vector<SolidBody>& solids() const { return solids_; }
+  // The index in solids() of the solid body with this name, if there is one.
+  std::optional<std::size_t> solid_index(const std::string& name) const;
 
   const NeighborList& fluid_inner() const { return fluid_inner_; }
   std::vector<FluidContact>& fluid_contacts() { return contacts_; }
