@@ -1,21 +1,38 @@
-"""Figures of the fish suite: head and tail positions against time, the tail trajectory, and the
-centre line over the last window (the travelling wave)."""
+"""Figures of the fish suite: per run, head and tail positions against time, the tail trajectory
+and the centre line over the last window (the travelling wave); and the tail's vertical motion of
+every run in one figure (the resolutions side by side)."""
 import os
 
 from plot_common import load_summary, plt, read_csv, save, suite_dir
 
+
+def run_directory(run):
+    config = run["config"]
+    return config.get("directory", f"E{config['youngs_modulus']:g}")
+
+
+def title(run):
+    config = run["config"]
+    text = f"E = {config['youngs_modulus']:g}"
+    if "dp_solid" in config:
+        text += f", dp_S = {config['dp_solid']:g}, dp_F = {config['dp_fluid']:g}"
+    return text
+
+
 directory = suite_dir()
 summary = load_summary(directory)
+tails = []
 for run in summary["runs"]:
-    E = run["config"]["youngs_modulus"]
-    d = os.path.join(directory, f"E{E:g}")
+    name = run_directory(run)
+    d = os.path.join(directory, name)
     head = read_csv(os.path.join(d, "head.csv"))
     tail = read_csv(os.path.join(d, "tail.csv"))
+    tails.append((title(run), tail))
     fig = plt.figure(figsize=(12, 8))
-    for k, (series, name, col) in enumerate([(head, "head", "x"), (head, "head", "y"), (tail, "tail", "x"), (tail, "tail", "y")]):
+    for k, (series, part, col) in enumerate([(head, "head", "x"), (head, "head", "y"), (tail, "tail", "x"), (tail, "tail", "y")]):
         ax = fig.add_subplot(3, 2, k + 1)
         ax.plot(series["time"], series[col], lw=0.7)
-        ax.set_ylabel(f"{name} {col}")
+        ax.set_ylabel(f"{part} {col}")
         ax.set_xlabel("t")
     ax = fig.add_subplot(3, 2, 5)
     t0 = 20.0
@@ -33,6 +50,18 @@ for run in summary["runs"]:
         ax.plot([p[0] for p in pts], [p[1] for p in pts], lw=0.8)
     ax.set_aspect("equal")
     ax.set_title("centre line over the last 5 time units", fontsize=9)
-    fig.suptitle(f"E = {E:g}")
+    fig.suptitle(title(run))
     fig.tight_layout()
-    save(fig, directory, f"fish_E{E:g}.png")
+    save(fig, directory, f"fish_{name}.png")
+
+if len(tails) > 1:
+    fig, axes = plt.subplots(len(tails), 1, figsize=(12, 2.4 * len(tails)), sharex=True)
+    for ax, (label, tail) in zip(axes, tails):
+        ax.plot(tail["time"], tail["y"], lw=0.6)
+        ax.axhspan(4.0 - 0.58, 4.0 + 0.58, color="0.9", zorder=0, label="paper: tail amplitude 0.58 about y = 4")
+        ax.set_ylabel("tail y")
+        ax.set_title(label, fontsize=9)
+    axes[0].legend(fontsize=8, loc="upper right")
+    axes[-1].set_xlabel("t")
+    fig.tight_layout()
+    save(fig, directory, "fish_tail_runs.png")

@@ -1,11 +1,13 @@
 #include "suites/scene_run.hpp"
 
 #include "simulation/run_summary.hpp"
+#include "sweep/sweep.hpp"
 
 #include <fmt/format.h>
 
 #include <cstdio>
 #include <cstdlib>
+#include <mutex>
 
 namespace mrsph::verification {
 
@@ -17,6 +19,20 @@ SceneRun run_scene(const SuiteContext& ctx, const std::string& scene_file, const
   if (options.observer_interval <= 0.0) options.observer_interval = run.scene.run.observer_interval;
   run.result = run_simulation(*run.scene.simulation, *run.scene.schedule, run.scene.observers, options);
   return run;
+}
+
+void run_cases(const SuiteContext& ctx, std::size_t count, const std::function<void(const SuiteContext&, std::size_t)>& task) {
+  std::mutex log_mutex;
+  SuiteContext case_ctx = ctx;
+  if (ctx.log) case_ctx.log = [&](const std::string& line) {
+    std::lock_guard lock(log_mutex);
+    ctx.log(line);
+  };
+  if (ctx.jobs > 1 && count > 1) {
+    run_concurrently(count, ctx.jobs, [&](std::size_t k) { task(case_ctx, k); });
+  } else {
+    for (std::size_t k = 0; k < count; ++k) task(case_ctx, k);
+  }
 }
 
 Json cost_json(const SceneRun& run) {

@@ -22,6 +22,10 @@ struct SceneRun {
 SceneRun run_scene(const SuiteContext& ctx, const std::string& scene_file, const std::vector<std::string>& overrides,
                    const std::function<RunOptions(const LoadedScene&)>& configure = {});
 
+// Runs task(case_ctx, k) for k < count: with --jobs > 1 several at once (each run single-threaded,
+// the log lines serialised), else one after another. For suites whose cases are independent runs.
+void run_cases(const SuiteContext& ctx, std::size_t count, const std::function<void(const SuiteContext&, std::size_t)>& task);
+
 // The cost block of the summary contract for a finished run.
 Json cost_json(const SceneRun& run);
 // The divergence record (null if none).

@@ -21,13 +21,11 @@
 #include "metrics/signal_metrics.hpp"
 #include "observers/snapshot.hpp"
 #include "suites/scene_run.hpp"
-#include "sweep/sweep.hpp"
 
 #include <fmt/format.h>
 
 #include <cmath>
 #include <map>
-#include <mutex>
 
 namespace mrsph::verification {
 
@@ -137,18 +135,9 @@ SuiteSummary run_valve_suite(const SuiteContext& ctx) {
   // The cases are independent: with --jobs > 1 they run concurrently, one thread each.
   std::vector<ValveResult> outcomes(numbers.size());
   std::vector<SuiteRun> records(numbers.size());
-  std::mutex log_mutex;
-  SuiteContext case_ctx = ctx;
-  if (ctx.log) case_ctx.log = [&](const std::string& line) {
-    std::lock_guard lock(log_mutex);
-    ctx.log(line);
-  };
-  const auto run_one = [&](std::size_t k) { outcomes[k] = run_case(case_ctx, numbers[k], end_time, records[k]); };
-  if (ctx.jobs > 1 && numbers.size() > 1) {
-    run_concurrently(numbers.size(), ctx.jobs, run_one);
-  } else {
-    for (std::size_t k = 0; k < numbers.size(); ++k) run_one(k);
-  }
+  run_cases(ctx, numbers.size(), [&](const SuiteContext& case_ctx, std::size_t k) {
+    outcomes[k] = run_case(case_ctx, numbers[k], end_time, records[k]);
+  });
   std::map<double, ValveResult> results;
   for (std::size_t k = 0; k < numbers.size(); ++k) {
     summary.add_run(std::move(records[k]));
