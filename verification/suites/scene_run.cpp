@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <mutex>
@@ -16,6 +17,17 @@ SceneRun run_scene(const SuiteContext& ctx, const std::string& scene_file, const
   SceneRun run{load_scene(ctx.scene(scene_file), overrides), {}};
   RunOptions options = configure ? configure(run.scene) : RunOptions{};
   if (options.end_time <= 0.0) options.end_time = run.scene.run.end_time;
+  // Long runs report each tenth of their simulated time once they have taken half a minute (cases
+  // that run concurrently would otherwise stay silent for the whole suite).
+  double next_tenth = 0.1;
+  std::string label = run.scene.name;
+  for (const std::string& o : overrides) label += " " + o;
+  if (ctx.log && !options.on_progress) options.on_progress = [&](const RunProgress& p) {
+    const double fraction = p.end_time > 0.0 ? p.time / p.end_time : 0.0;
+    if (p.wall_s < 30.0 || fraction < next_tenth) return;
+    ctx.log(fmt::format("    {}: t = {:.4g} of {:g} ({:.0f} %), {:.0f} s", label, p.time, p.end_time, 100.0 * fraction, p.wall_s));
+    next_tenth = std::floor(fraction * 10.0 + 1.0) / 10.0;
+  };
   if (options.observer_interval <= 0.0) options.observer_interval = run.scene.run.observer_interval;
   run.result = run_simulation(*run.scene.simulation, *run.scene.schedule, run.scene.observers, options);
   return run;
