@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 
 namespace mrsph {
@@ -47,13 +48,12 @@ PointObserver::PointObserver(ObserverSpec spec, const Simulation& sim) : spec_(s
     }
     return;
   }
-  for (std::size_t s = 0; s < sim.solids().size(); ++s) {
-    if (sim.solids()[s].name != body) continue;
+  if (const std::optional<std::size_t> s = sim.solid_index(body)) {
     target_ = Target::Solid;
-    solid_index_ = s;
+    solid_index_ = *s;
     if (spec_.quantity == ObservedQuantity::Pressure || spec_.quantity == ObservedQuantity::Front)
       throw std::invalid_argument("observer '" + spec_.name + "': a solid is observed as position, displacement or velocity");
-    const SolidBody& solid = sim.solids()[s];
+    const SolidBody& solid = sim.solids()[*s];
     const SolidParticles& p = solid.particles;
     if (spec_.nearest_particle) {
       Real best = std::numeric_limits<Real>::infinity();

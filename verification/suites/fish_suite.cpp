@@ -33,15 +33,9 @@ struct FishCase {
   std::string directory() const { return fmt::format("E{:g}_bh{}", youngs_modulus, resolution); }
 };
 
-struct FishResult {
-  bool diverged = false;
-  Json metrics = Json::object();
-};
-
-FishResult run_case(const SuiteContext& ctx, const FishCase& fish, double end_time, SuiteRun& record) {
+void run_case(const SuiteContext& ctx, const FishCase& fish, double end_time, SuiteRun& record) {
   const double E = fish.youngs_modulus;
   if (ctx.log) ctx.log(fmt::format("fish: {} to t = {:g}", fish.tag(), end_time));
-  FishResult out;
   // Centre-line particles (the row just above the centre line) over the last 5 time units.
   CsvTable centre;
   centre.columns = {"time", "x0", "x", "y"};
@@ -59,12 +53,11 @@ FishResult run_case(const SuiteContext& ctx, const FishCase& fish, double end_ti
     };
     return options;
   });
-  out.diverged = run.result.divergence.has_value();
   const std::string dir = fish.directory();
   write_observer_series(run.result.series, ctx.out_dir / dir);
   centre.write(ctx.out_dir / dir / "centre_line.csv");
 
-  Json& m = out.metrics;
+  Json& m = record.metrics;
   const double settle = 20.0;
   const ObserverSeries& head = series_named(run.result.series, "head");
   const ObserverSeries& tail = series_named(run.result.series, "tail");
@@ -136,11 +129,9 @@ FishResult run_case(const SuiteContext& ctx, const FishCase& fish, double end_ti
                    {"solid_damping", run.scene.parameters.at("damping")}, {"resolution", fish.resolution},
                    {"dp_solid", run.scene.parameters.at("dp_solid")}, {"dp_fluid", run.scene.parameters.at("dp_fluid")},
                    {"checked_against_paper", fish.checked_against_paper}, {"directory", dir}};
-  record.metrics = m;
   record.cost = cost_json(run);
-  record.diverged = out.diverged;
+  record.diverged = run.result.divergence.has_value();
   record.divergence = divergence_record(run);
-  return out;
 }
 
 }  // namespace
@@ -152,16 +143,14 @@ SuiteSummary run_fish_suite(const SuiteContext& ctx) {
       ? std::vector<FishCase>{{200.0, 8, false}}
       : std::vector<FishCase>{{200.0, 16, true}, {500.0, 16, true}, {200.0, 8, false}};
   // The cases are independent: with --jobs > 1 they run concurrently, one thread each.
-  std::vector<FishResult> results(cases.size());
   std::vector<SuiteRun> records(cases.size());
   run_cases(ctx, cases.size(), [&](const SuiteContext& case_ctx, std::size_t k) {
-    results[k] = run_case(case_ctx, cases[k], end_time, records[k]);
+    run_case(case_ctx, cases[k], end_time, records[k]);
   });
-  for (auto& record : records) summary.add_run(std::move(record));
 
   const std::string paper = "paper section 4.4 (the values it states), within 15 % (issue 7)";
   for (std::size_t k = 0; k < cases.size(); ++k) {
-    const FishResult& r = results[k];
+    const SuiteRun& r = records[k];
     const std::string tag = cases[k].tag();
     if (r.diverged) {
       summary.check_missing(tag + " runs", "diverged", "issue 7");
@@ -186,6 +175,7 @@ SuiteSummary run_fish_suite(const SuiteContext& ctx) {
     near("tail_amplitude_y", "tail vertical amplitude", 0.58);
     near("tail_lissajous_ratio", "tail Lissajous ratio (x : y frequency)", 2.25);
   }
+  for (auto& record : records) summary.add_run(std::move(record));
   summary.write(ctx.out_dir);
   render_figures(ctx, "plot_fish.py", summary);
   summary.write(ctx.out_dir);

@@ -31,12 +31,6 @@ namespace mrsph::verification {
 
 namespace {
 
-struct ValveResult {
-  double wo;
-  bool diverged = false;
-  Json metrics = Json::object();
-};
-
 WomersleyProfile inflow_profile(const LoadedScene& scene) {
   const ParameterTable& p = scene.parameters;
   WomersleyProfile w;
@@ -48,9 +42,8 @@ WomersleyProfile inflow_profile(const LoadedScene& scene) {
   return w;
 }
 
-ValveResult run_case(const SuiteContext& ctx, double wo, double end_time, SuiteRun& record) {
+void run_case(const SuiteContext& ctx, double wo, double end_time, SuiteRun& record) {
   if (ctx.log) ctx.log(fmt::format("valve: Wo = {:g} to t = {:g} s", wo, end_time));
-  ValveResult out{wo};
   CsvTable frame;
   frame.columns = {"body", "x", "y", "u", "v", "von_mises"};
   const std::string dir = fmt::format("Wo{:g}", wo);
@@ -68,13 +61,12 @@ ValveResult run_case(const SuiteContext& ctx, double wo, double end_time, SuiteR
     };
     return options;
   });
-  out.diverged = run.result.divergence.has_value();
   write_observer_series(run.result.series, ctx.out_dir / dir);
   frame.write(ctx.out_dir / dir / "frame_end.csv");
 
   const double T = run.scene.parameters.at("T");
   const WomersleyProfile analytic = inflow_profile(run.scene);
-  Json& m = out.metrics;
+  Json& m = record.metrics;
   for (const ObserverSeries& s : run.result.series) {
     if (s.name == "inflow_centre") {
       double e2 = 0.0, r2 = 0.0;
@@ -117,14 +109,12 @@ ValveResult run_case(const SuiteContext& ctx, double wo, double end_time, SuiteR
   record.case_name = fmt::format("Wo={:g}", wo);
   record.config = {{"womersley_number", wo}, {"end_time", end_time}, {"inflow_period", T},
                    {"kinematic_viscosity", run.scene.parameters.at("nu")}, {"scene", "venous_valve.json"}};
-  record.metrics = m;
   record.cost = cost_json(run);
-  record.diverged = out.diverged;
+  record.diverged = run.result.divergence.has_value();
   record.divergence = divergence_record(run);
-  return out;
 }
 
-double metric(const ValveResult& r, const char* name) { return r.metrics.value(name, NAN); }
+double metric(const SuiteRun& r, const char* name) { return r.metrics.value(name, NAN); }
 
 }  // namespace
 
@@ -133,18 +123,15 @@ SuiteSummary run_valve_suite(const SuiteContext& ctx) {
   const std::vector<double> numbers = ctx.quick ? std::vector<double>{10.0} : std::vector<double>{1.0, 5.0, 10.0};
   const double end_time = ctx.quick ? 0.05 : 2.0;
   // The cases are independent: with --jobs > 1 they run concurrently, one thread each.
-  std::vector<ValveResult> outcomes(numbers.size());
   std::vector<SuiteRun> records(numbers.size());
   run_cases(ctx, numbers.size(), [&](const SuiteContext& case_ctx, std::size_t k) {
-    outcomes[k] = run_case(case_ctx, numbers[k], end_time, records[k]);
+    run_case(case_ctx, numbers[k], end_time, records[k]);
   });
-  std::map<double, ValveResult> results;
-  for (std::size_t k = 0; k < numbers.size(); ++k) {
-    summary.add_run(std::move(records[k]));
-    results.emplace(numbers[k], outcomes[k]);
-  }
+  std::map<double, const SuiteRun*> results;
+  for (std::size_t k = 0; k < numbers.size(); ++k) results.emplace(numbers[k], &records[k]);
 
-  for (const auto& [wo, r] : results) {
+  for (const auto& [wo, run] : results) {
+    const SuiteRun& r = *run;
     const std::string tag = fmt::format("Wo={:g}", wo);
     if (r.diverged) {
       summary.check_missing(tag + " runs", "diverged", "issue 7");
@@ -167,11 +154,12 @@ SuiteSummary run_valve_suite(const SuiteContext& ctx) {
     }
   }
   if (!ctx.quick && results.size() == 3) {
-    const double a1 = metric(results.at(1.0), "amplitude_y_mm"), a5 = metric(results.at(5.0), "amplitude_y_mm"),
-                 a10 = metric(results.at(10.0), "amplitude_y_mm");
+    const double a1 = metric(*results.at(1.0), "amplitude_y_mm"), a5 = metric(*results.at(5.0), "amplitude_y_mm"),
+                 a10 = metric(*results.at(10.0), "amplitude_y_mm");
     summary.check_range("leaflet amplitude grows from Wo = 1 to 5 (ratio)", a5 / a1, 1.0, 1e9, "paper section 4.3");
     summary.check_range("leaflet amplitude grows from Wo = 5 to 10 (ratio)", a10 / a5, 1.0, 1e9, "paper section 4.3");
   }
+  for (auto& record : records) summary.add_run(std::move(record));
   summary.write(ctx.out_dir);
   render_figures(ctx, "plot_valve.py", summary);
   summary.write(ctx.out_dir);
