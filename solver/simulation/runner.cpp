@@ -13,6 +13,7 @@
 #include <ctime>
 #include <limits>
 #include <map>
+#include <stdexcept>
 
 namespace mrsph {
 
@@ -100,7 +101,13 @@ RunResult run_simulation(Simulation& sim, Schedule& schedule, const std::vector<
   if (options.resume) {
     state = *options.resume;
     while (next_sample < samples.size() && samples[next_sample] <= sim.time) ++next_sample;  // already taken
-    if (options.snapshot_interval > 0.0) snapshots.emplace(options.snapshot_dir, sim, state.snapshot_times);
+    if (options.snapshot_interval > 0.0) {
+      // The checkpointed run may have written no snapshots (its next one then lies at t = 0) or
+      // written them at another interval: the next one is due within one interval from now.
+      if (reached(sim.time, state.next_snapshot) || state.next_snapshot > sim.time + options.snapshot_interval)
+        state.next_snapshot = sim.time + options.snapshot_interval;
+      snapshots.emplace(options.snapshot_dir, sim, state.snapshot_times);
+    }
   } else {
     state.next_observation = sim.time + options.observer_interval;
     state.next_snapshot = sim.time + options.snapshot_interval;
@@ -125,6 +132,8 @@ RunResult run_simulation(Simulation& sim, Schedule& schedule, const std::vector<
       if (options.observer_interval > 0.0) target = std::min(target, state.next_observation);
       if (snapshots) target = std::min(target, state.next_snapshot);
       if (next_sample < samples.size()) target = std::min(target, samples[next_sample]);
+      if (!(target > sim.time))
+        throw std::logic_error(fmt::format("run_simulation: the next stop, t = {}, is not after the current time {}", target, sim.time));
       schedule.advance(sim, target - sim.time);
 
       if (options.observer_interval <= 0.0) {
