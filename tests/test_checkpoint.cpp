@@ -84,6 +84,11 @@ TEST_CASE("A run restarted from a checkpoint equals the uninterrupted run bitwis
   CHECK(rest.steps.advection == uninterrupted.steps.advection);
   CHECK(rest.steps.solid == uninterrupted.steps.solid);
   CHECK(same_series(rest.series, uninterrupted.series));
+  // The compressibility record covers the whole run, the part before the checkpoint included.
+  CHECK(rest.compressibility.density_deviation.value == uninterrupted.compressibility.density_deviation.value);
+  CHECK(rest.compressibility.density_deviation.time == uninterrupted.compressibility.density_deviation.time);
+  CHECK(rest.compressibility.mach.value == uninterrupted.compressibility.mach.value);
+  CHECK(rest.compressibility.mach.time == uninterrupted.compressibility.mach.time);
   CHECK(state_bytes(second, runner_state(rest)) == state_bytes(whole, runner_state(uninterrupted)));
   std::filesystem::remove_all(dir);
 }

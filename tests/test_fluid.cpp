@@ -160,3 +160,37 @@ TEST_CASE("Initial relaxation fills the voids a slanted wall leaves in the fluid
     REQUIRE(f.vel[i].y() == 0.0);
   }
 }
+
+TEST_CASE("The compressibility record keeps the largest density deviation and Mach number, with where and when", "[fluid]") {
+  LoadedScene s = scene_from(periodic_box());
+  Simulation& sim = *s.simulation;
+  FluidParticles& f = sim.fluid().particles;
+  const double rho0 = sim.fluid().material.rho0(), c0 = sim.fluid().material.sound_speed();
+  CompressibilityRecord record;
+  update_compressibility_record(sim, record);
+  CHECK(record.density_deviation.value < 1e-12);  // the lattice at rest starts at rho0
+  CHECK(record.mach.value == 0.0);
+
+  sim.time = 0.5;
+  f.rho[3] = 0.8 * rho0;                 // a 20 % deficit
+  f.rho[7] = 1.1 * rho0;                 // a smaller excess
+  f.vel[5] = Vec2(0.3 * c0, 0.4 * c0);   // Mach 0.5
+  update_compressibility_record(sim, record);
+  CHECK(record.density_deviation.value == Approx(0.2));
+  CHECK(record.density_deviation.time == 0.5);
+  CHECK(record.density_deviation.position == f.pos[3]);
+  CHECK(record.mach.value == Approx(0.5));
+  CHECK(record.mach.position == f.pos[5]);
+
+  sim.time = 0.7;  // milder later: the record keeps the earlier extremes
+  f.rho[3] = rho0;
+  f.vel[5] = Vec2(0.1 * c0, 0.0);
+  update_compressibility_record(sim, record);
+  CHECK(record.density_deviation.time == 0.5);
+  CHECK(record.mach.value == Approx(0.5));
+  f.vel[9] = Vec2(0.0, -0.6 * c0);  // a faster one replaces it
+  update_compressibility_record(sim, record);
+  CHECK(record.mach.value == Approx(0.6));
+  CHECK(record.mach.time == 0.7);
+  CHECK(record.mach.position == f.pos[9]);
+}

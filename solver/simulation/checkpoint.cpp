@@ -11,7 +11,7 @@ namespace mrsph {
 namespace {
 
 constexpr char kMagic[8] = {'M', 'R', 'S', 'P', 'H', 'C', 'K', '1'};
-constexpr std::uint32_t kVersion = 1;
+constexpr std::uint32_t kVersion = 2;  // 2: the compressibility record
 
 std::string read_all(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
@@ -79,6 +79,11 @@ std::string serialise_checkpoint(const Json& scene_document, const std::string& 
   w.value(runner.next_observation);
   w.value(runner.next_snapshot);
   w.array(runner.snapshot_times);
+  for (const FluidExtreme* e : {&runner.compressibility.density_deviation, &runner.compressibility.mach}) {
+    w.value(e->value);
+    w.value(e->time);
+    w.value(e->position);
+  }
   w.value<std::uint64_t>(runner.series.size());
   for (const ObserverSeries& s : runner.series) {
     w.text(s.name);
@@ -125,6 +130,11 @@ void restore_checkpoint(const std::filesystem::path& path, Simulation& sim, Runn
   runner.next_observation = r.value<Real>();
   runner.next_snapshot = r.value<Real>();
   runner.snapshot_times = r.array<Real>(BinaryReader::kAnySize, "snapshot times");
+  for (FluidExtreme* e : {&runner.compressibility.density_deviation, &runner.compressibility.mach}) {
+    e->value = r.value<Real>();
+    e->time = r.value<Real>();
+    e->position = r.value<Vec2>();
+  }
   const auto series_count = r.value<std::uint64_t>();
   if (series_count != runner.series.size())
     throw std::runtime_error(path.string() + ": " + std::to_string(series_count) + " observer series, the scene has " +

@@ -20,6 +20,13 @@ nlohmann::ordered_json divergence_json(const DivergenceInfo& info) {
   return {{"time", info.time}, {"step", info.step}, {"body", info.body}, {"particle", info.particle}, {"reason", info.reason}};
 }
 
+nlohmann::ordered_json compressibility_json(const CompressibilityRecord& record) {
+  auto extreme = [](const FluidExtreme& e) {
+    return nlohmann::ordered_json{{"value", e.value}, {"time", e.time}, {"position", {e.position.x(), e.position.y()}}};
+  };
+  return {{"max_density_deviation", extreme(record.density_deviation)}, {"max_mach", extreme(record.mach)}};
+}
+
 nlohmann::ordered_json run_summary_json(const LoadedScene& scene, const RunResult& result, int threads) {
   nlohmann::ordered_json j;
   j["scene"] = scene.name;
@@ -36,6 +43,7 @@ nlohmann::ordered_json run_summary_json(const LoadedScene& scene, const RunResul
   j["machine"] = {{"threads", threads}, {"hardware_concurrency", std::thread::hardware_concurrency()}};
   j["cost"] = {{"wall_s", result.wall_s}, {"cpu_s", result.cpu_s},
                {"particles", particle_counts(*scene.simulation)}, {"steps", step_counts(result.steps)}};
+  if (scene.simulation->has_fluid()) j["compressibility"] = compressibility_json(result.compressibility);
   nlohmann::ordered_json files = nlohmann::ordered_json::array();
   for (const auto& s : result.series) files.push_back("observers/" + s.name + ".csv");
   j["observers"] = files;

@@ -118,6 +118,7 @@ RunResult run_simulation(Simulation& sim, Schedule& schedule, const std::vector<
       state.snapshot_times.push_back(sim.time);
     }
     handle_samples();
+    update_compressibility_record(sim, state.compressibility);
   }
   Real next_checkpoint = sim.time + options.checkpoint_interval;
   double next_wall_checkpoint = options.checkpoint_wall_interval_s;
@@ -135,6 +136,7 @@ RunResult run_simulation(Simulation& sim, Schedule& schedule, const std::vector<
       if (!(target > sim.time))
         throw std::logic_error(fmt::format("run_simulation: the next stop, t = {}, is not after the current time {}", target, sim.time));
       schedule.advance(sim, target - sim.time);
+      update_compressibility_record(sim, state.compressibility);
 
       if (options.observer_interval <= 0.0) {
         record();
@@ -177,6 +179,7 @@ RunResult run_simulation(Simulation& sim, Schedule& schedule, const std::vector<
     }
   }
   result.series = std::move(state.series);
+  result.compressibility = state.compressibility;
   result.end_time_reached = sim.time;
   result.steps = sim.steps;
   result.wall_s = wall_seconds();

@@ -3,6 +3,7 @@
 // never prints), and turns a divergence into a recorded outcome instead of a crash.
 #pragma once
 
+#include "observers/compressibility_monitor.hpp"
 #include "observers/point_observer.hpp"
 #include "simulation/simulation.hpp"
 #include "time/schedule.hpp"
@@ -43,6 +44,7 @@ struct RunnerState {
   Real next_snapshot = 0.0;
   std::vector<Real> snapshot_times;
   std::vector<ObserverSeries> series;
+  CompressibilityRecord compressibility;
 };
 
 struct RunOptions {
@@ -85,6 +87,7 @@ struct RunResult {
   Real end_time_reached = 0.0;
   StepCounters steps;
   std::vector<ObserverSeries> series;
+  CompressibilityRecord compressibility;  // over the whole run, a restarted one included
 };
 
 RunResult run_simulation(Simulation& sim, Schedule& schedule, const std::vector<ObserverSpec>& observers,

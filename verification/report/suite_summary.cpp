@@ -55,9 +55,13 @@ Json SuiteSummary::to_json() const {
   j["passed"] = passed();
   j["machine"] = {{"threads", threads_}, {"hardware_concurrency", std::thread::hardware_concurrency()}};
   Json runs = Json::array();
-  for (const SuiteRun& r : runs_)
-    runs.push_back({{"case", r.case_name}, {"config", r.config}, {"metrics", r.metrics}, {"cost", r.cost},
-                    {"diverged", r.diverged}, {"divergence", r.divergence}});
+  for (const SuiteRun& r : runs_) {
+    Json run = {{"case", r.case_name}, {"config", r.config}, {"metrics", r.metrics}, {"cost", r.cost}};
+    if (!r.compressibility.is_null()) run["compressibility"] = r.compressibility;
+    run["diverged"] = r.diverged;
+    run["divergence"] = r.divergence;
+    runs.push_back(std::move(run));
+  }
   j["runs"] = runs;
   j["checks"] = checks_;
   if (!skipped_.empty()) j["skipped"] = skipped_;

@@ -19,6 +19,7 @@ struct SuiteRun {
   Json config = Json::object();
   Json metrics = Json::object();
   Json cost = Json::object();
+  Json compressibility;  // the fluid's largest density deviation and Mach number; null: no fluid
   bool diverged = false;
   Json divergence;  // null unless diverged
 };

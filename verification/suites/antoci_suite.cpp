@@ -144,6 +144,7 @@ GateResult run_case(const SuiteContext& ctx, const GateCase& c, const std::optio
                    {"solid_kinematics", c.kinematics.empty() ? "averaged" : c.kinematics}, {"scene", "elastic_gate.json"}};
   record.metrics = m;
   record.cost = cost_json(run);
+  record.compressibility = compressibility_record(run);
   record.diverged = out.diverged;
   record.divergence = divergence_record(run);
   summary.add_run(std::move(record));
@@ -196,6 +197,7 @@ void run_dam_break(const SuiteContext& ctx, SuiteSummary& summary) {
   record.config = {{"scene", "dam_break.json"}, {"resolution", run.scene.parameters.at("resolution")}};
   record.metrics = metrics;
   record.cost = cost_json(run);
+  record.compressibility = compressibility_record(run);
   record.diverged = run.result.divergence.has_value();
   record.divergence = divergence_record(run);
   summary.add_run(std::move(record));

@@ -130,6 +130,7 @@ void run_case(const SuiteContext& ctx, const FishCase& fish, double end_time, Su
                    {"dp_solid", run.scene.parameters.at("dp_solid")}, {"dp_fluid", run.scene.parameters.at("dp_fluid")},
                    {"checked_against_paper", fish.checked_against_paper}, {"directory", dir}};
   record.cost = cost_json(run);
+  record.compressibility = compressibility_record(run);
   record.diverged = run.result.divergence.has_value();
   record.divergence = divergence_record(run);
 }

@@ -76,6 +76,7 @@ MomentumResult run_schedule(const SuiteContext& ctx, const std::string& schedule
                    {"initial_momentum", {p0.x(), p0.y()}}};
   record.metrics = {{"momentum_drift", out.drift}, {"momentum_transferred", out.transferred}};
   record.cost = cost_json(run);
+  record.compressibility = compressibility_record(run);
   record.diverged = out.diverged;
   record.divergence = divergence_record(run);
   summary.add_run(std::move(record));

@@ -106,6 +106,7 @@ PlateResult run_case(const SuiteContext& ctx, const PlateCase& c, SuiteSummary& 
   record.metrics = {{"period", out.period}, {"period_theory", out.theory}, {"period_error", out.period_error},
                     {"tip_amplitude", out.amplitude}, {"amplitude_decay", out.decay}, {"energy_drift", out.energy_drift}};
   record.cost = cost_json(run);
+  record.compressibility = compressibility_record(run);
   record.diverged = out.diverged;
   record.divergence = divergence_record(run);
   summary.add_run(std::move(record));

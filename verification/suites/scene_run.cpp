@@ -60,6 +60,11 @@ Json cost_json(const SceneRun& run) {
   return cost;
 }
 
+Json compressibility_record(const SceneRun& run) {
+  if (!run.scene.simulation->has_fluid()) return nullptr;
+  return compressibility_json(run.result.compressibility);
+}
+
 Json divergence_record(const SceneRun& run) {
   if (!run.result.divergence) return nullptr;
   return divergence_json(*run.result.divergence);

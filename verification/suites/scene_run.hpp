@@ -28,6 +28,8 @@ void run_cases(const SuiteContext& ctx, std::size_t count, const std::function<v
 
 // The cost block of the summary contract for a finished run.
 Json cost_json(const SceneRun& run);
+// The fluid's largest density deviation and Mach number over the run (null without a fluid).
+Json compressibility_record(const SceneRun& run);
 // The divergence record (null if none).
 Json divergence_record(const SceneRun& run);
 

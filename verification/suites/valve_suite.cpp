@@ -110,6 +110,7 @@ void run_case(const SuiteContext& ctx, double wo, double end_time, SuiteRun& rec
   record.config = {{"womersley_number", wo}, {"end_time", end_time}, {"inflow_period", T},
                    {"kinematic_viscosity", run.scene.parameters.at("nu")}, {"scene", "venous_valve.json"}};
   record.cost = cost_json(run);
+  record.compressibility = compressibility_record(run);
   record.diverged = run.result.divergence.has_value();
   record.divergence = divergence_record(run);
 }

@@ -99,6 +99,7 @@ WomersleyRun run_case(const SuiteContext& ctx, double wo, int resolution, SuiteS
   record.metrics = {{"l2_error", out.error.l2()}, {"vertical_velocity_ratio", out.error.vertical_ratio()},
                     {"samples", out.error.samples}};
   record.cost = cost_json(run);
+  record.compressibility = compressibility_record(run);
   record.diverged = out.diverged;
   record.divergence = divergence_record(run);
   summary.add_run(std::move(record));
