@@ -2,8 +2,9 @@
 // of ten times the fastest flow keeps the Mach number near 0.1 and |rho / rho0 - 1| ~ M^2 near 1 %;
 // Monaghan 1994, "Simulating free surface flows with SPH"): the largest density deviation
 // |rho / rho0 - 1| and the largest Mach number |v| / c0 reached by any fluid particle, each with
-// when and where, checked at the end of every advection step. A value far above those (a void opening at a periodic seam, a jet through a
-// narrow gap) says the run left the regime there, even if it did not diverge.
+// when and where, checked at the end of every advection step. A value far above those (a void
+// opening at a periodic seam, a jet through a narrow gap) says the run left the regime there, even
+// if it did not diverge.
 #pragma once
 
 #include "simulation/simulation.hpp"
