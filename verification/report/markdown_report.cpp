@@ -46,7 +46,8 @@ void suite_section(std::string& md, const std::string& name, const Json& s) {
     md += "\nNot evaluated:\n\n";
     for (const Json& k : s.at("skipped")) md += fmt::format("- {}: {}\n", k.value("what", ""), k.value("why", ""));
   }
-  md += "\n| run | metrics | wall [s] | particles | steps (adv / ac / solid) | diverged |\n|---|---|---|---|---|---|\n";
+  md += "\n| run | metrics | wall [s] | particles | steps (adv / ac / solid) | max density deviation / Mach (t) | diverged |\n"
+        "|---|---|---|---|---|---|---|\n";
   for (const Json& r : s.at("runs")) {
     std::string metrics;
     int shown = 0;
@@ -60,12 +61,19 @@ void suite_section(std::string& md, const std::string& name, const Json& s) {
     if (cost.contains("steps"))
       steps = fmt::format("{} / {} / {}", number(cost["steps"]["advection"]), number(cost["steps"]["acoustic"]),
                           number(cost["steps"]["solid"]));
+    std::string compressibility = "-";  // the fluid's extremes (weakly compressible: about 0.01 / 0.1)
+    if (r.contains("compressibility") && r["compressibility"].is_object()) {
+      const Json& rho = r["compressibility"]["max_density_deviation"];
+      const Json& mach = r["compressibility"]["max_mach"];
+      compressibility = fmt::format("{:.3f} (t = {}) / {:.2f} (t = {})", rho["value"].get<double>(), number(rho["time"]),
+                                    mach["value"].get<double>(), number(mach["time"]));
+    }
     std::string diverged = r.value("diverged", false) ? "**yes**" : "no";
     if (r.value("diverged", false) && r.contains("divergence") && r["divergence"].is_object())
       diverged += fmt::format(" (t = {}, {}: {})", number(r["divergence"]["time"]), number(r["divergence"]["body"]),
                               escape(number(r["divergence"]["reason"])));
-    md += fmt::format("| {} | {} | {} | {} | {} | {} |\n", escape(r.value("case", "")), escape(metrics),
-                      number(cost.value("wall_s", Json())), particles, steps, diverged);
+    md += fmt::format("| {} | {} | {} | {} | {} | {} | {} |\n", escape(r.value("case", "")), escape(metrics),
+                      number(cost.value("wall_s", Json())), particles, steps, compressibility, diverged);
   }
   if (s.contains("figures") && !s["figures"].empty()) {
     md += "\n";

@@ -92,6 +92,7 @@ struct CaseRun {
   Json parameters = Json::object();
   bool reused = false;
   std::string failure;  // no outputs (with --merge: not run, or not finished, yet); nothing else is set
+  Json compressibility;  // null if unknown
 };
 
 CaseRun run_here(const SuiteContext& ctx, const FsiCase& c, double end_time) {
@@ -105,14 +106,14 @@ CaseRun run_here(const SuiteContext& ctx, const FsiCase& c, double end_time) {
   });
   // Shared with the sweep suites (speed-accuracy reuses the cases).
   persist_in_cache(ctx, as_sweep, run.scene, run.result);
-  CaseRun out{run.result.series, cost_json(run), divergence_record(run), Json::object(), false, ""};
+  CaseRun out{run.result.series, cost_json(run), divergence_record(run), Json::object(), false, "", compressibility_record(run)};
   for (const char* name : {"dp_solid", "dp_fluid", "damping"}) out.parameters[name] = run.scene.parameters.at(name);
   return out;
 }
 
 CaseRun from_sweep(const SweepOutcome& o) {
-  if (!o.failure.empty()) return CaseRun{{}, Json::object(), Json(), Json::object(), false, o.failure};
-  return CaseRun{o.series, o.cost, o.diverged ? o.divergence : Json(), o.parameters, o.reused, ""};
+  if (!o.failure.empty()) return CaseRun{{}, Json::object(), Json(), Json::object(), false, o.failure, Json()};
+  return CaseRun{o.series, o.cost, o.diverged ? o.divergence : Json(), o.parameters, o.reused, "", o.compressibility};
 }
 
 FsiResult analyse_case(const SuiteContext& ctx, const FsiCase& c, const CaseRun& run, double end_time, double settle,
@@ -131,6 +132,7 @@ FsiResult analyse_case(const SuiteContext& ctx, const FsiCase& c, const CaseRun&
                    {"solid_damping", run.parameters.at("damping")}, {"reused_from_cache", run.reused}};
   record.metrics = out.metrics;
   record.cost = run.cost;
+  record.compressibility = run.compressibility;
   record.diverged = out.diverged;
   record.divergence = run.divergence;
   summary.add_run(std::move(record));

@@ -53,6 +53,7 @@ SweepOutcome read_outcome(const SweepRun& run, const std::string& key, const std
   out.diverged = summary.value("diverged", false);
   out.divergence = summary.value("divergence", Json());
   out.cost = summary.value("cost", Json::object());
+  out.compressibility = summary.value("compressibility", Json());
   out.parameters = summary.value("parameters", Json::object());
   for (const Json& file : summary.value("observers", Json::array())) {
     const auto table = read_numeric_table(dir / file.get<std::string>());

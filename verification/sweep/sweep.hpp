@@ -40,6 +40,7 @@ struct SweepOutcome {
   Json divergence;       // null unless diverged
   std::string failure;   // an error other than divergence (bad overrides, ...)
   Json cost = Json::object();
+  Json compressibility;  // the run summary's (null: no fluid, or a cache written before it existed)
   Json parameters = Json::object();  // the scene's evaluated parameters
   std::vector<ObserverSeries> series;
   bool reused = false;   // loaded from the cache, not run now
