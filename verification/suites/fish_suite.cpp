@@ -75,13 +75,17 @@ void run_case(const SuiteContext& ctx, const FishCase& fish, double end_time, Su
     if (const auto f = spectral_peak_frequency(tail.time, series_column(tail, 1), settle, 0.01, 3.0)) m["tail_frequency_spectral"] = *f;
     if (const auto tx = oscillation_stats(tail.time, series_column(tail, 0), settle)) m["tail_lissajous_ratio"] = tx->frequency / ty->frequency;
   }
-  // Sustained flapping: half peak-to-peak of the tail over the last fifth of the run.
+  // Sustained flapping: half peak-to-peak of the tail's y over the last fifth of the run, about its
+  // centred moving average over 4 time units (three of the paper's periods, 1 / 0.74): a slow drift
+  // of the whole body off the centre line is not flapping (with the raw range, a kite drifting by
+  // 1.4 in the last fifth passed this check).
   {
     const std::vector<double> y = series_column(tail, 1);
+    const std::vector<double> slow = moving_average(tail.time, y, 4.0);
     double lo = INFINITY, hi = -INFINITY;
     for (std::size_t k = 0; k < y.size(); ++k)
-      if (tail.time[k] >= 0.8 * end_time) { lo = std::min(lo, y[k]); hi = std::max(hi, y[k]); }
-    m["tail_amplitude_last_fifth"] = 0.5 * (hi - lo);
+      if (tail.time[k] >= 0.8 * end_time) { lo = std::min(lo, y[k] - slow[k]); hi = std::max(hi, y[k] - slow[k]); }
+    m["tail_oscillation_last_fifth"] = 0.5 * (hi - lo);
   }
   // Symmetric start: the lift stays at round-off until the instability breaks the symmetry.
   {
@@ -169,7 +173,8 @@ SuiteSummary run_fish_suite(const SuiteContext& ctx) {
       if (std::isnan(v)) summary.check_missing(tag + " " + label, "not measured (no oscillation after t = 20)", paper);
       else summary.check_near(tag + " " + label, v, reference, 0.15 * reference, paper);
     };
-    summary.check_range(tag + " sustained flapping: tail half peak-to-peak over the last fifth", r.metrics.value("tail_amplitude_last_fifth", NAN),
+    summary.check_range(tag + " sustained flapping: tail half peak-to-peak about its 4-unit moving average, last fifth",
+                        r.metrics.value("tail_oscillation_last_fifth", NAN),
                         0.1, 10.0, "paper: sustained flapping after t = 20");
     near("tail_frequency", "tail frequency", 0.74);
     near("head_amplitude_y", "head vertical amplitude", 0.3);
