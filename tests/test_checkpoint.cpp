@@ -29,6 +29,21 @@ RunOptions options_for(const LoadedScene& s) {
   return o;
 }
 
+// A scene rebuilt from a checkpoint and restored, with the runner state to resume (as `mrsph restart`).
+struct Restored {
+  LoadedScene scene;
+  RunnerState resume;
+};
+
+Restored restore_from(const std::filesystem::path& checkpoint) {
+  const CheckpointHeader header = read_checkpoint_header(checkpoint);
+  Restored r{build_scene(header.scene_document, header.scene_file), {}};
+  for (const auto& spec : r.scene.observers)
+    r.resume.series.push_back(ObserverSeries{spec.name, PointObserver(spec, *r.scene.simulation).columns(), {}, {}});
+  restore_checkpoint(checkpoint, *r.scene.simulation, r.resume);
+  return r;
+}
+
 RunnerState runner_state(const RunResult& r) {
   RunnerState st;
   st.series = r.series;
@@ -69,15 +84,11 @@ TEST_CASE("A run restarted from a checkpoint equals the uninterrupted run bitwis
   REQUIRE(std::filesystem::exists(o1.checkpoint_path));
 
   // Restore into a freshly built scene and finish.
-  const CheckpointHeader header = read_checkpoint_header(o1.checkpoint_path);
-  LoadedScene second = build_scene(header.scene_document, header.scene_file);
-  RunnerState resume;
-  for (const auto& spec : second.observers)
-    resume.series.push_back(ObserverSeries{spec.name, PointObserver(spec, *second.simulation).columns(), {}, {}});
-  restore_checkpoint(o1.checkpoint_path, *second.simulation, resume);
+  Restored restored = restore_from(o1.checkpoint_path);
+  LoadedScene& second = restored.scene;
   CHECK(second.simulation->time == part.end_time_reached);
   RunOptions o2 = options_for(second);
-  o2.resume = &resume;
+  o2.resume = &restored.resume;
   const RunResult rest = run_simulation(*second.simulation, *second.schedule, second.observers, o2);
   REQUIRE(rest.completed);
 
@@ -145,19 +156,15 @@ TEST_CASE("A restart may ask for snapshots the checkpointed run did not write", 
   const RunResult part = run_simulation(*first.simulation, *first.schedule, first.observers, o1);
   REQUIRE(part.completed);
 
-  const CheckpointHeader header = read_checkpoint_header(o1.checkpoint_path);
-  LoadedScene second = build_scene(header.scene_document, header.scene_file);
-  RunnerState resume;
-  for (const auto& spec : second.observers)
-    resume.series.push_back(ObserverSeries{spec.name, PointObserver(spec, *second.simulation).columns(), {}, {}});
-  restore_checkpoint(o1.checkpoint_path, *second.simulation, resume);
+  Restored restored = restore_from(o1.checkpoint_path);
+  LoadedScene& second = restored.scene;
   const Real restart_time = second.simulation->time;
   REQUIRE(restart_time > 0.1);
   RunOptions o2 = options_for(second);
   o2.end_time = restart_time + 0.05;
   o2.snapshot_interval = 0.02;
   o2.snapshot_dir = dir / "snapshots";
-  o2.resume = &resume;
+  o2.resume = &restored.resume;
   const RunResult rest = run_simulation(*second.simulation, *second.schedule, second.observers, o2);
   REQUIRE(rest.completed);
   CHECK_FALSE(rest.divergence);
