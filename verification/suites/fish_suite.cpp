@@ -8,11 +8,13 @@
 // fluid 0.05, the fish one level finer), checked against the paper; and E = 200 at the scene's
 // default dp_S = bh/8, dp_F = bh/4 (the code's later test), reported beside them as the coarse
 // resolution. Cases run concurrently with --jobs > 1. Quick: E = 200 to t = 30 at the default
-// resolution: stability, the symmetric start, the tether.
+// resolution: stability, the symmetric start, the tether. Beside every run, the linear flutter
+// theory of the same body (fish_linear_theory.hpp): its modes, and the modulus below which it flutters.
 #include "suites/fish_suite.hpp"
 
 #include "io/csv_table.hpp"
 #include "metrics/signal_metrics.hpp"
+#include "suites/fish_linear_theory.hpp"
 #include "suites/scene_run.hpp"
 
 #include <fmt/format.h>
@@ -87,6 +89,17 @@ void run_case(const SuiteContext& ctx, const FishCase& fish, double end_time, Su
       if (tail.time[k] >= 0.8 * end_time) { lo = std::min(lo, y[k] - slow[k]); hi = std::max(hi, y[k] - slow[k]); }
     m["tail_oscillation_last_fifth"] = 0.5 * (hi - lo);
   }
+  // Mean drag after the start: the cable's tension for the linear theory's tether.
+  {
+    const std::vector<double> fx = series_column(forces, 0);
+    double sum = 0.0;
+    int n = 0;
+    for (std::size_t k = 0; k < fx.size(); ++k)
+      if (forces.time[k] >= settle) { sum += fx[k]; ++n; }
+    m["mean_drag"] = n > 0 ? sum / n : 0.0;
+  }
+  if (ctx.log) ctx.log(fmt::format("fish: {}: linear flutter theory", fish.tag()));
+  m["linear_theory"] = fish_linear_theory(run.scene, std::max(0.0, m["mean_drag"].get<double>()), fish.checked_against_paper);
   // Symmetric start: the lift stays at round-off until the instability breaks the symmetry.
   {
     double largest = 0.0;
