@@ -51,16 +51,18 @@ Real Polygon::signed_distance(const Vec2& p) const {
   return inside ? -d : d;
 }
 
+Real fish_half_thickness(Real s, Real length, Real thickness, const std::vector<Real>& coefficients) {
+  Real c = 0.0, power = 1.0;
+  for (std::size_t i = 0; i < coefficients.size(); ++i) {
+    power *= s / length;
+    c += coefficients[i] * thickness * power;  // a_i s^i = coefficient_i (thickness / length^i) s^i
+  }
+  return c;
+}
+
 Polygon fish_outline(const Vec2& head_tip, Real length, Real thickness, const std::vector<Real>& coefficients,
                      Real min_half_thickness, int points_per_side) {
-  auto half = [&](Real s) {
-    Real c = 0.0, power = 1.0;
-    for (std::size_t i = 0; i < coefficients.size(); ++i) {
-      power *= s / length;
-      c += coefficients[i] * thickness * power;  // a_i s^i = coefficient_i (thickness / length^i) s^i
-    }
-    return c;
-  };
+  auto half = [&](Real s) { return fish_half_thickness(s, length, thickness, coefficients); };
   std::vector<Vec2> upper, lower;
   for (int k = 0; k <= points_per_side; ++k) {
     const Real s = length * k / points_per_side;  // from the tail tip

@@ -67,6 +67,8 @@ class Polygon final : public Shape {
 // min_half_thickness the thin ends are dropped (as the paper's code does). Built as a polygon.
 Polygon fish_outline(const Vec2& head_tip, Real length, Real thickness, const std::vector<Real>& coefficients,
                      Real min_half_thickness, int points_per_side = 200);
+// Its half-thickness c(s) at the distance s from the tail tip.
+Real fish_half_thickness(Real s, Real length, Real thickness, const std::vector<Real>& coefficients);
 
 class Union final : public Shape {
  public:

@@ -1,5 +1,6 @@
 #include "suites/fish_linear_theory.hpp"
 
+#include "geometry/shapes.hpp"
 #include "scene/expression.hpp"
 #include "theory/plate_flutter.hpp"
 
@@ -23,11 +24,7 @@ theory::SlenderBody fish_as_slender_body(const LoadedScene& scene, double cable_
   const double min_half = value(outline.at("min_half_thickness")), nose_x = value(outline.at("head_tip").at(0));
   std::vector<double> coefficients;
   for (const Json& c : outline.at("coefficients")) coefficients.push_back(value(c));
-  auto half = [=](double x) {  // x from the nose; CASES.md section 4, s from the tail tip
-    double c = 0.0, power = 1.0;
-    for (double a : coefficients) { power *= (length - x) / length; c += a * thickness * power; }
-    return c;
-  };
+  auto half = [=](double x) { return fish_half_thickness(length - x, length, thickness, coefficients); };  // x from the nose
   theory::SlenderBody body;
   body.thickness = [=](double x) { return 2.0 * half(x); };
   body.x_begin = length;
