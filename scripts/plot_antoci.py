@@ -17,7 +17,7 @@ DAMPING_STUDY = ("III-undamped", "III-undamped-instantaneous", "III-damping-0.2"
 
 fig, (ax_x, ax_y) = plt.subplots(2, 1, figsize=(8, 7), sharex=True)
 for run in summary["runs"]:
-    if run["case"] == "dam break" or run["case"] in DAMPING_STUDY:
+    if run["case"] == "dam break" or run["case"] in DAMPING_STUDY or run["case"].startswith("grid-"):
         continue
     d = read_csv(os.path.join(directory, f"case_{run['case']}", "tip_mm.csv"))
     ax_x.plot(d["time"], d["x_mm"], lw=1.2, label=f"mrsph case {run['case']}")
@@ -43,6 +43,17 @@ ax_y.set_xlabel("t [s]")
 ax_x.legend(fontsize=7)
 save(fig, directory, "antoci_displacement.png")
 
+
+
+def finish_tip_axes(ax):
+    """The experiment's points, axis labels and legend of a plot of the free end's x against t."""
+    if exp:
+        ax.plot(exp["time"], exp["x_mm"], "ks", ms=5, label="experiment (Antoci et al. 2007)")
+    ax.set_xlabel("t [s]")
+    ax.set_ylabel("horizontal displacement of the free end [mm]")
+    ax.legend(fontsize=7)
+
+
 study = [run["case"] for run in summary["runs"] if run["case"] in DAMPING_STUDY]
 if study:  # case III against its damping study (full mode)
     fig, ax = plt.subplots(figsize=(8, 4.5))
@@ -51,12 +62,35 @@ if study:  # case III against its damping study (full mode)
         damping = next(r["config"] for r in summary["runs"] if r["case"] == case)
         ax.plot(d["time"], d["x_mm"], lw=1.0,
                 label=f"case {case} (damping {damping['solid_damping']:g}, {damping['solid_kinematics']} kinematics)")
-    if exp:
-        ax.plot(exp["time"], exp["x_mm"], "ks", ms=5, label="experiment (Antoci et al. 2007)")
-    ax.set_xlabel("t [s]")
-    ax.set_ylabel("horizontal displacement of the free end [mm]")
-    ax.legend(fontsize=7)
+    finish_tip_axes(ax)
     save(fig, directory, "antoci_damping.png")
+
+grid = summary.get("convergence")
+if grid:  # the convergence of the specified model (full mode)
+    fig, (ax_e, ax_c) = plt.subplots(1, 2, figsize=(13, 4.8))
+    styles = {"2nd": "-o", "B0": "--s"}
+    for dp_f in sorted({row["dp_fluid_mm"] for row in grid}, reverse=True):
+        for weights in ("2nd", "B0"):
+            rows = sorted((r for r in grid if r["dp_fluid_mm"] == dp_f and r["weights"] == weights
+                           and r["rms_error_x_mm"] is not None), key=lambda r: r["resolution"])
+            if rows:
+                ax_e.plot([r["resolution"] for r in rows], [r["rms_error_x_mm"] for r in rows], styles[weights],
+                          label=f"dp_F = {dp_f:g} mm, {weights} weights")
+    ax_e.axhline(5.0, color="k", lw=0.8, ls=":", label="issue 5 limit (5 mm)")
+    ax_e.set_xscale("log", base=2)
+    ax_e.set_xticks([4, 8, 16])
+    ax_e.set_xticklabels(["b/4", "b/8", "b/16"])
+    ax_e.set_xlabel("solid spacing dp_S")
+    ax_e.set_ylabel("RMS error of the free end's x against the experiment [mm]")
+    ax_e.legend(fontsize=7)
+    finest = max(r["resolution"] for r in grid)
+    for row in grid:
+        if row["resolution"] == finest or (row["dp_fluid_mm"] == min(r["dp_fluid_mm"] for r in grid)):
+            d = read_csv(os.path.join(directory, f"case_{row['case']}", "tip_mm.csv"))
+            ax_c.plot(d["time"], d["x_mm"], "--" if row["weights"] == "B0" else "-", lw=1.0,
+                      label=f"dp_F = {row['dp_fluid_mm']:g} mm, b/{row['resolution']}, {row['weights']}")
+    finish_tip_axes(ax_c)
+    save(fig, directory, "antoci_convergence.png")
 
 frames_path = os.path.join(directory, "case_III", "frames.csv")
 if os.path.exists(frames_path):

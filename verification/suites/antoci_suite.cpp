@@ -15,6 +15,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <optional>
@@ -56,10 +57,11 @@ struct GateResult {
   double wall_s = NAN;
   Curve x, y;  // mm
   Json metrics = Json::object();
+  SuiteRun record;  // for the summary; the caller adds it (cases may run concurrently)
 };
 
 GateResult run_case(const SuiteContext& ctx, const GateCase& c, const std::optional<Curve>& exp_x,
-                    const std::optional<Curve>& exp_y, bool snapshots, SuiteSummary& summary) {
+                    const std::optional<Curve>& exp_y, bool snapshots) {
   if (ctx.log) ctx.log(fmt::format("antoci: case {} (ratio {}, b/dp_S = {}, {})", c.name, c.ratio, c.resolution, c.schedule));
   std::vector<std::string> overrides{fmt::format("parameters.ratio={}", c.ratio),
                                      fmt::format("parameters.resolution={}", c.resolution),
@@ -135,7 +137,7 @@ GateResult run_case(const SuiteContext& ctx, const GateCase& c, const std::optio
     m["peak_time_s"] = out.x.t[static_cast<std::size_t>(it - out.x.value.begin())];
   }
 
-  SuiteRun record;
+  SuiteRun& record = out.record;
   record.case_name = c.name;
   record.config = {{"ratio", c.ratio}, {"resolution", c.resolution}, {"schedule", c.schedule},
                    {"gradient_correction", c.gradient_correction},
@@ -147,7 +149,6 @@ GateResult run_case(const SuiteContext& ctx, const GateCase& c, const std::optio
   record.compressibility = compressibility_record(run);
   record.diverged = out.diverged;
   record.divergence = divergence_record(run);
-  summary.add_run(std::move(record));
   return out;
 }
 
@@ -210,6 +211,99 @@ void run_dam_break(const SuiteContext& ctx, SuiteSummary& summary) {
   summary.check_range("dam-break front lead over Martin & Moyce (mean relative)",
                       metrics.value("martin_moyce_a_2_25in_mean_relative_lead", NAN), -0.05, 0.25,
                       "Martin & Moyce (1952), reference-data/dam_break_front.json; sanity bound for an inviscid front");
+}
+
+// The convergence of the specified model (full mode): the gate on a grid of fluid spacings dp_F =
+// 2.5 and 1.25 mm and solid spacings b/dp_S = 4, 8, 16 (ratios 1-8), each with both kinds of
+// gradient weights, and case II's fluid (0.625 mm, b/8) with B0. Points equal to a case above (I,
+// II, III, III-B0) are taken from it; the others run concurrently with --jobs. It shows where the
+// discretisation converges to, and so what the experiment's criteria ask of the model itself.
+void run_convergence_grid(const SuiteContext& ctx, const std::optional<Curve>& exp_x, const std::optional<Curve>& exp_y,
+                          std::map<std::string, GateResult>& results, SuiteSummary& summary) {
+  struct GridPoint {
+    double dp_fluid_mm;
+    int resolution;
+    std::string weights;
+    std::string name;  // the case's name
+  };
+  const auto weights_label = [](const std::string& w) { return w == "first_order" ? std::string("B0") : std::string("2nd"); };
+  std::vector<GridPoint> grid;
+  for (const double dp_fluid_mm : {2.5, 1.25})
+    for (const int resolution : {4, 8, 16})
+      for (const char* weights : {"second_order", "first_order"})
+        grid.push_back({dp_fluid_mm, resolution, weights, ""});
+  grid.push_back({0.625, 8, "second_order", ""});
+  grid.push_back({0.625, 8, "first_order", ""});
+  const double b_mm = 5.0;  // the gate's thickness (elastic_gate.json)
+  std::vector<GateCase> to_run;
+  for (GridPoint& g : grid) {
+    const int ratio = static_cast<int>(std::lround(g.dp_fluid_mm * g.resolution / b_mm));
+    for (const auto& [name, r] : results)
+      if (r.c.ratio == ratio && r.c.resolution == g.resolution && r.c.gradient_correction == g.weights &&
+          r.c.schedule == "multi_step_position_verlet" && !r.c.damping && r.c.kinematics.empty())
+        g.name = name;
+    if (!g.name.empty()) continue;
+    g.name = fmt::format("grid-F{:g}-b{}-{}", g.dp_fluid_mm, g.resolution, weights_label(g.weights));
+    GateCase c{g.name, ratio, g.resolution, "multi_step_position_verlet"};
+    c.gradient_correction = g.weights;
+    to_run.push_back(c);
+  }
+  // Longest first, so that concurrent runs finish together: the solid's cost grows as (b/dp_S)^3
+  // (particles and sub-steps; the second-order weights take twice the sub-steps), the fluid's as
+  // dp_F^-3; seconds on one thread, measured for cases I and III.
+  const auto estimated_cost = [&](const GateCase& c) {
+    const double dp_fluid_mm = b_mm * c.ratio / c.resolution;
+    return 5.0 * std::pow(c.resolution / 4.0, 3) * (c.gradient_correction == "first_order" ? 0.5 : 1.0) +
+           6.0 * std::pow(2.5 / dp_fluid_mm, 3);
+  };
+  std::stable_sort(to_run.begin(), to_run.end(),
+                   [&](const GateCase& a, const GateCase& b) { return estimated_cost(a) > estimated_cost(b); });
+  std::vector<GateResult> ran(to_run.size());
+  run_cases(ctx, to_run.size(), [&](const SuiteContext& case_ctx, std::size_t k) {
+    ran[k] = run_case(case_ctx, to_run[k], exp_x, exp_y, false);
+  });
+  for (GateResult& r : ran) {
+    summary.add_run(r.record);
+    write_curve(r.x, r.y, ctx.out_dir / ("case_" + r.c.name) / "tip_mm.csv");
+    results.emplace(r.c.name, std::move(r));
+  }
+
+  Json table = Json::array();
+  for (const GridPoint& g : grid) {
+    const GateResult& r = results.at(g.name);
+    Json row = {{"case", g.name}, {"dp_fluid_mm", g.dp_fluid_mm}, {"resolution", g.resolution}, {"ratio", r.c.ratio},
+                {"weights", weights_label(g.weights)}, {"wall_s", r.wall_s}, {"diverged", r.diverged}};
+    for (const char* key : {"peak_x_mm", "peak_time_s", "rms_error_x_mm", "rms_error_x_loading_mm", "max_error_x_mm"})
+      row[key] = r.metrics.contains(key) ? r.metrics[key] : Json(nullptr);
+    table.push_back(row);
+  }
+  summary.extra()["convergence"] = table;
+
+  // Both kinds of weights are consistent, so they must converge to one answer: at each fluid spacing
+  // the RMS distance between their tip curves (0-0.4 s) should shrink as the solid is refined. B0 is
+  // first-order accurate (the gradient of a linear field exact), so four times finer should divide
+  // its error by at least about four; the check asks for half of that.
+  const auto name_of = [&](double dp_fluid_mm, int resolution, const std::string& weights) {
+    for (const GridPoint& g : grid)
+      if (g.dp_fluid_mm == dp_fluid_mm && g.resolution == resolution && g.weights == weights) return g.name;
+    return std::string();
+  };
+  Json distance = Json::object();
+  for (const double dp_fluid_mm : {2.5, 1.25}) {
+    double gap[2] = {NAN, NAN};
+    for (int k = 0; k < 2; ++k) {
+      const GateResult& b0 = results.at(name_of(dp_fluid_mm, k == 0 ? 4 : 16, "first_order"));
+      const GateResult& second = results.at(name_of(dp_fluid_mm, k == 0 ? 4 : 16, "second_order"));
+      if (b0.diverged || second.diverged) continue;
+      if (const auto d = compare_curves(b0.x.t, b0.x.value, second.x.t, second.x.value)) gap[k] = d->rms_error;
+    }
+    distance[fmt::format("{:g}", dp_fluid_mm)] = {{"b4_mm", gap[0]}, {"b16_mm", gap[1]}};
+    summary.check_at_most(fmt::format("gate tip curves of B0 and the second-order weights converge together (dp_F = {:g} mm): "
+                                      "RMS distance at b/16 over that at b/4", dp_fluid_mm),
+                          gap[1] / gap[0], 0.5,
+                          "consistency of both discretisations; first-order convergence would give 0.25 for a 4 times finer solid");
+  }
+  summary.extra()["convergence_weights_distance"] = distance;
 }
 
 }  // namespace
@@ -278,7 +372,8 @@ SuiteSummary run_antoci_suite(const SuiteContext& ctx) {
   }
   std::map<std::string, GateResult> results;
   for (const GateCase& c : cases) {
-    GateResult r = run_case(ctx, c, exp_x, exp_y, c.name == "III", summary);
+    GateResult r = run_case(ctx, c, exp_x, exp_y, c.name == "III");
+    summary.add_run(r.record);
     write_curve(r.x, r.y, ctx.out_dir / ("case_" + c.name) / "tip_mm.csv");
     results.emplace(c.name, std::move(r));
   }
@@ -323,6 +418,7 @@ SuiteSummary run_antoci_suite(const SuiteContext& ctx) {
     else
       summary.note_skipped("case III wall-time check", "needs --threads 2 (the acceptance is stated for 2 threads)");
   }
+  if (!ctx.quick) run_convergence_grid(ctx, exp_x, exp_y, results, summary);
   run_dam_break(ctx, summary);
 
   const Json paper = {{"I", 80.15}, {"II", 523.17}, {"III", 27.17}, {"IV", 130.77}};
