@@ -83,9 +83,10 @@ if grid:  # the convergence of the specified model (full mode)
     ax_e.set_xlabel("solid spacing dp_S")
     ax_e.set_ylabel("RMS error of the free end's x against the experiment [mm]")
     ax_e.legend(fontsize=7)
-    finest = max(r["resolution"] for r in grid)
+    finest_solid = max(r["resolution"] for r in grid)
+    finest_fluid = min(r["dp_fluid_mm"] for r in grid)
     for row in grid:
-        if row["resolution"] == finest or (row["dp_fluid_mm"] == min(r["dp_fluid_mm"] for r in grid)):
+        if row["resolution"] == finest_solid or row["dp_fluid_mm"] == finest_fluid:
             d = read_csv(os.path.join(directory, f"case_{row['case']}", "tip_mm.csv"))
             ax_c.plot(d["time"], d["x_mm"], "--" if row["weights"] == "B0" else "-", lw=1.0,
                       label=f"dp_F = {row['dp_fluid_mm']:g} mm, b/{row['resolution']}, {row['weights']}")

@@ -163,6 +163,15 @@ void write_curve(const Curve& x, const Curve& y, const std::filesystem::path& pa
   t.write(path);
 }
 
+// A finished case: its record into the summary, its tip curve into case_NAME/tip_mm.csv, the
+// result kept under its name.
+void keep_result(const SuiteContext& ctx, GateResult r, std::map<std::string, GateResult>& results, SuiteSummary& summary) {
+  summary.add_run(r.record);
+  write_curve(r.x, r.y, ctx.out_dir / ("case_" + r.c.name) / "tip_mm.csv");
+  const std::string name = r.c.name;
+  results.emplace(name, std::move(r));
+}
+
 // The dry-bed dam break: the surge front against Martin & Moyce (1952) and Koshizuka & Oka (1996).
 void run_dam_break(const SuiteContext& ctx, SuiteSummary& summary) {
   if (ctx.log) ctx.log("antoci: dry-bed dam break (free-surface sanity scene)");
@@ -262,11 +271,7 @@ void run_convergence_grid(const SuiteContext& ctx, const std::optional<Curve>& e
   run_cases(ctx, to_run.size(), [&](const SuiteContext& case_ctx, std::size_t k) {
     ran[k] = run_case(case_ctx, to_run[k], exp_x, exp_y, false);
   });
-  for (GateResult& r : ran) {
-    summary.add_run(r.record);
-    write_curve(r.x, r.y, ctx.out_dir / ("case_" + r.c.name) / "tip_mm.csv");
-    results.emplace(r.c.name, std::move(r));
-  }
+  for (GateResult& r : ran) keep_result(ctx, std::move(r), results, summary);
 
   Json table = Json::array();
   for (const GridPoint& g : grid) {
@@ -371,12 +376,7 @@ SuiteSummary run_antoci_suite(const SuiteContext& ctx) {
     for (const GateCase& c : {undamped, undamped_instantaneous, damped_more}) cases.push_back(c);
   }
   std::map<std::string, GateResult> results;
-  for (const GateCase& c : cases) {
-    GateResult r = run_case(ctx, c, exp_x, exp_y, c.name == "III");
-    summary.add_run(r.record);
-    write_curve(r.x, r.y, ctx.out_dir / ("case_" + c.name) / "tip_mm.csv");
-    results.emplace(c.name, std::move(r));
-  }
+  for (const GateCase& c : cases) keep_result(ctx, run_case(ctx, c, exp_x, exp_y, c.name == "III"), results, summary);
 
   const GateResult& III = results.at("III");
   const std::string issue = "issue 5 acceptance; experiment Antoci et al. 2007 (first sample subtracted)";
