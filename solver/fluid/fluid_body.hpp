@@ -76,6 +76,11 @@ struct FluidContact {
   // applies that dissipation in the next acoustic step; so does the boundary. Indexed by boundary
   // particle, so it survives the rebuild of the pair list between advection steps.
   Vec2Array boundary_dissipation_reaction;
+  // Momentum the fluid gave this boundary since the start of the current advection step, and the
+  // time that covers: impulse / duration is the force averaged over the step (the force observer's
+  // drag and lift), where the pair forces above hold only the last acoustic step.
+  Vec2 step_impulse = Vec2::Zero();
+  Real step_duration = 0.0;
 };
 
 }  // namespace mrsph

@@ -24,6 +24,25 @@ Vec2 total_force_on_boundary(const FluidContact& contact) {
   return total;
 }
 
+void clear_boundary_impulses(std::vector<FluidContact>& contacts) {
+  for (FluidContact& c : contacts) {
+    c.step_impulse = Vec2::Zero();
+    c.step_duration = 0.0;
+  }
+}
+
+void add_boundary_impulses(std::vector<FluidContact>& contacts, Real dt) {
+  for (FluidContact& c : contacts) {
+    c.step_impulse += dt * total_force_on_boundary(c);
+    c.step_duration += dt;
+  }
+}
+
+Vec2 mean_force_on_boundary(const FluidContact& contact) {
+  if (contact.step_duration > 0.0) return contact.step_impulse / contact.step_duration;
+  return total_force_on_boundary(contact);
+}
+
 void begin_kinematics_average(SolidParticles& solid) {
   parallel_for_each(solid.size(), [&](std::size_t a) {
     solid.pos_acoustic_start[a] = solid.pos[a];

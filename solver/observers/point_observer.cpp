@@ -98,7 +98,7 @@ std::vector<std::string> PointObserver::columns() const {
 std::vector<Real> PointObserver::sample(const Simulation& sim) const {
   if (target_ == Target::Boundaries) {
     Vec2 total = Vec2::Zero();
-    for (std::size_t k : contact_indices_) total += total_force_on_boundary(sim.fluid_contacts()[k]);
+    for (std::size_t k : contact_indices_) total += mean_force_on_boundary(sim.fluid_contacts()[k]);
     return {total.x(), total.y()};
   }
   if (target_ == Target::SolidPair) {

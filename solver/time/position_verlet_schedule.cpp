@@ -58,6 +58,7 @@ Real PositionVerletSchedule::advance(Simulation& sim, Real max_step) {
   compute_viscous_force(fluid, inner, contacts);
   correct_transport_velocity(fluid, inner, contacts);
   for (SolidBody& solid : sim.solids()) update_solid_normals(solid);
+  clear_boundary_impulses(contacts);
 
   Real elapsed = 0.0;
   for (bool last = false; !last;) {
@@ -69,6 +70,7 @@ Real PositionVerletSchedule::advance(Simulation& sim, Real max_step) {
     last = step.last;
 
     acoustic_first_half(fluid, inner, contacts, dt, sim.body_force.at(sim.time + 0.5 * dt));
+    add_boundary_impulses(contacts, dt);
     for (std::size_t s = 0; s < sim.solids().size(); ++s)
       set_force_from_fluid(sim.solid_contact(s), sim.solids()[s].particles);
     acoustic_second_half(fluid, inner, contacts, dt);

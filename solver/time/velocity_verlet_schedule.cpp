@@ -51,6 +51,7 @@ Real VelocityVerletSchedule::advance(Simulation& sim, Real max_step) {
   // The pair lists were rebuilt: forces of the current state on the new lists.
   advance_density_and_position(fluid, 0.0, 0.0);
   evaluate_forces(sim, sim.body_force.at(t0));
+  clear_boundary_impulses(contacts);
 
   Real elapsed = 0.0;
   for (bool last = false; !last;) {
@@ -58,6 +59,7 @@ Real VelocityVerletSchedule::advance(Simulation& sim, Real max_step) {
     const Real dt = step.size;
     last = step.last;
     kick(fluid, 0.5 * dt, sim.body_force.at(sim.time));
+    add_boundary_impulses(contacts, 0.5 * dt);
     advance_position(fluid, dt);
     add_velocity_divergence_and_dissipation(fluid, inner, contacts);
     advance_density_and_position(fluid, dt, 0.0);
@@ -70,6 +72,7 @@ Real VelocityVerletSchedule::advance(Simulation& sim, Real max_step) {
     sim.time = last ? t0 + Dt : t0 + elapsed;
     evaluate_forces(sim, sim.body_force.at(sim.time));
     kick(fluid, 0.5 * dt, sim.body_force.at(sim.time));
+    add_boundary_impulses(contacts, 0.5 * dt);
     if (sim.inflow) sim.inflow->apply(fluid.particles, sim.time, sim.box());
     ++sim.steps.acoustic;
   }
