@@ -111,3 +111,28 @@ TEST_CASE("A scene needing more particles than the limit is refused before alloc
   limits.max_particles = 500;
   CHECK_THROWS_WITH(scene_from(channel_scene(), limits), Catch::Contains("would need up to"));
 }
+
+TEST_CASE("An initial velocity given by expressions of x, y and the parameters", "[scene]") {
+  const std::string scene = R"json({
+    "parameters": {"dp": 0.1, "U": 2},
+    "domain": {"lower": [0, 0], "upper": [1, 1], "periodic": [true, true]},
+    "fluid": {"dp": "dp", "region": {"rectangle": {"lower": [0, 0], "upper": [1, 1]}}, "density": 1, "sound_speed": 10,
+              "initial_velocity": {"type": "expression", "u": "U * x + y", "v": "sin(pi * y)"}},
+    "end_time": 1})json";
+  LoadedScene s = scene_from(scene);
+  const FluidParticles& f = s.simulation->fluid().particles;
+  for (std::size_t i = 0; i < f.size(); ++i) {
+    REQUIRE(f.vel[i].x() == Approx(2.0 * f.pos[i].x() + f.pos[i].y()).epsilon(1e-14));
+    REQUIRE(f.vel[i].y() == Approx(std::sin(M_PI * f.pos[i].y())).epsilon(1e-14));
+  }
+  // A bad expression is reported with its key before anything runs.
+  std::string bad = scene;
+  bad.replace(bad.find("sin(pi * y)"), 11, "sin(pi * z)");
+  try {
+    scene_from(bad);
+    FAIL("an unknown name in an expression was accepted");
+  } catch (const InputError& e) {
+    CHECK(std::string(e.what()).find("fluid.initial_velocity.v") != std::string::npos);
+    CHECK(std::string(e.what()).find("z") != std::string::npos);
+  }
+}

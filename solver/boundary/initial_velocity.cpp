@@ -21,6 +21,8 @@ Vec2 evaluate(const CantileverModeVelocity& f, const Vec2& p) {
   return Vec2(0.0, f.amplitude * shape);
 }
 
+Vec2 evaluate(const VelocityField& f, const Vec2& p) { return f.at(p); }
+
 }  // namespace
 
 Vec2 initial_velocity_at(const InitialVelocity& field, const Vec2& p) {

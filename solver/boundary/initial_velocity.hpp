@@ -6,11 +6,14 @@
 //                     v_y = V [M (cos kx - cosh kx) - N (sin kx - sinh kx)] / Q, k L = 1.875,
 //                     M = sin kL + sinh kL, N = cos kL + cosh kL, Q = 2 (cos kL sinh kL - sin kL cosh kL)
 //                     (zero on the clamped side, x < x_clamp)
+//   field:            v = (u(x, y), v(x, y)), any field given as a function of position (the scene
+//                     reader builds it from expressions over x, y and the scene's parameters)
 #pragma once
 
 #include "boundary/womersley_profile.hpp"
 #include "core/types.hpp"
 
+#include <functional>
 #include <variant>
 
 namespace mrsph {
@@ -31,7 +34,11 @@ struct CantileverModeVelocity {
   Real kL = 1.875;
 };
 
-using InitialVelocity = std::variant<UniformVelocity, WomersleyVelocity, CantileverModeVelocity>;
+struct VelocityField {
+  std::function<Vec2(const Vec2&)> at;
+};
+
+using InitialVelocity = std::variant<UniformVelocity, WomersleyVelocity, CantileverModeVelocity, VelocityField>;
 
 Vec2 initial_velocity_at(const InitialVelocity& field, const Vec2& p);
 
