@@ -136,3 +136,68 @@ TEST_CASE("An initial velocity given by expressions of x, y and the parameters",
     CHECK(std::string(e.what()).find("z") != std::string::npos);
   }
 }
+
+TEST_CASE("Left to the defaults, the fluid is treated as its flow needs", "[scene]") {
+  const std::string tank = R"({"lower": [-0.3, -0.3], "upper": [1.3, 1.3]},
+      "walls": [{"name": "tank", "dp": 0.05, "region": {"difference": {
+                 "base": {"rectangle": {"lower": [-0.2, -0.2], "upper": [1.2, 0.8]}},
+                 "subtract": [{"rectangle": {"lower": [0, 0], "upper": [1, 1]}}]}}}])";
+  const std::string channel = R"({"lower": [0, -0.3], "upper": [1, 1.3], "periodic": [true, false]},
+      "walls": [{"name": "floor", "dp": 0.05, "region": {"rectangle": {"lower": [0, -0.2], "upper": [1, 0]}}}])";
+  const auto fluid_of = [](const std::string& domain_and_walls, const std::string& fluid_extra, const std::string& extra) {
+    LoadedScene s = scene_from(R"({
+      "domain": )" + domain_and_walls + R"(,
+      "fluid": {"dp": 0.05, "region": {"rectangle": {"lower": [0, 0], "upper": [1, 0.5]}}, "density": 1000,
+                "sound_speed": 20)" + fluid_extra + R"(},
+      "end_time": 1)" + extra + "}");
+    return s.simulation->fluid().options;
+  };
+  const std::string& closed = tank;
+  const std::string gravity = R"(, "body_force": {"constant": [0, -9.81]})";
+  // Gravity on an axis that is not periodic: a free surface, pressure measured from zero.
+  FluidOptions o = fluid_of(closed, "", gravity);
+  CHECK(o.density == DensityReinitialisation::FreeSurface);
+  CHECK(o.pressure_reference == PressureReference::Zero);
+  // No gravity: a confined fluid, whose pressure level only reflects its particle count.
+  o = fluid_of(closed, "", "");
+  CHECK(o.density == DensityReinitialisation::Internal);
+  CHECK(o.pressure_reference == PressureReference::Mean);
+  // A constant force along a periodic axis drives a confined flow.
+  o = fluid_of(channel, "", R"(, "body_force": {"constant": [0.1, 0]})");
+  CHECK(o.density == DensityReinitialisation::Internal);
+  // What the scene states is kept.
+  o = fluid_of(closed, R"(, "density_reinitialisation": "internal", "pressure_reference": "zero")", gravity);
+  CHECK(o.density == DensityReinitialisation::Internal);
+  CHECK(o.pressure_reference == PressureReference::Zero);
+
+  // The Riemann momentum dissipation is on for an inviscid fluid, off for a viscous one, unless stated.
+  const auto riemann_of = [](const std::string& fluid_extra) {
+    return scene_from(R"({"domain": {"lower": [0, 0], "upper": [1, 1], "periodic": [true, true]},
+      "fluid": {"dp": 0.1, "region": {"rectangle": {"lower": [0, 0], "upper": [1, 1]}}, "density": 1,
+                "sound_speed": 10)" + fluid_extra + R"(}, "end_time": 1})").simulation->fluid().riemann;
+  };
+  CHECK(riemann_of("").momentum);
+  CHECK_FALSE(riemann_of(R"(, "viscosity": 0.01)").momentum);
+  CHECK_FALSE(riemann_of(R"(, "riemann": {"momentum": false})").momentum);
+  CHECK(riemann_of(R"(, "viscosity": 0.01, "riemann": {"momentum": true})").momentum);
+}
+
+TEST_CASE("The relaxation perturbation moves every particle by at most its amplitude, the same way every run", "[scene]") {
+  const auto positions = [](double amplitude) {
+    LoadedScene s = scene_from(R"({"domain": {"lower": [0, 0], "upper": [1, 1], "periodic": [true, true]},
+      "fluid": {"dp": 0.1, "region": {"rectangle": {"lower": [0, 0], "upper": [1, 1]}}, "density": 1, "sound_speed": 10,
+                "relaxation_perturbation": )" + std::to_string(amplitude) + R"(,
+                "initial_velocity": {"type": "expression", "u": "x", "v": "0"}}, "end_time": 1})");
+    return s.simulation->fluid().particles;
+  };
+  const FluidParticles lattice = positions(0.0), first = positions(0.2), second = positions(0.2);
+  double largest = 0.0;
+  for (std::size_t i = 0; i < lattice.size(); ++i) {
+    const Vec2 d = first.pos[i] - lattice.pos[i];
+    largest = std::max(largest, d.cwiseAbs().maxCoeff());
+    REQUIRE(first.pos[i] == second.pos[i]);
+    REQUIRE(first.vel[i].x() == first.pos[i].x());  // the initial velocity at the moved position
+  }
+  CHECK(largest <= 0.2 * 0.1);
+  CHECK(largest > 0.1 * 0.1);  // it did move them
+}

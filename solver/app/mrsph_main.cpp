@@ -1,5 +1,6 @@
 // mrsph: runs any scene file. See `mrsph --help`.
 #include "core/thread_limit.hpp"
+#include "fluid/density_summation.hpp"
 #include "io/atomic_file.hpp"
 #include "scene/scene_loader.hpp"
 #include "simulation/checkpoint.hpp"
@@ -7,6 +8,7 @@
 #include "simulation/runner.hpp"
 
 #include <CLI/CLI.hpp>
+
 #include <fmt/format.h>
 #include <tbb/info.h>
 
@@ -39,6 +41,13 @@ void print_scene(const mrsph::LoadedScene& scene) {
     const auto& f = sim.fluid();
     fmt::print("fluid      {:<12} {:>8} particles  dp {:g}  h {:g}  c {:g}  mu {:g}\n", f.name, f.particles.size(), f.dp,
                f.h(), f.material.sound_speed(), f.material.viscosity);
+    const bool free_surface = f.options.density == mrsph::DensityReinitialisation::FreeSurface;
+    fmt::print("           {} fluid: pressure forces from {}; Riemann dissipation in continuity {}, in momentum {};"
+               " emptiest kernel support {:.0f} % filled\n",
+               free_surface ? "free-surface" : "confined",
+               f.options.pressure_reference == mrsph::PressureReference::Mean ? "the mean pressure" : "zero",
+               f.riemann.continuity ? "on" : "off", f.riemann.momentum ? "on" : "off",
+               100.0 * mrsph::smallest_support_fraction(f, sim.fluid_inner(), sim.fluid_contacts()));
   }
   for (const auto& w : sim.walls())
     fmt::print("wall       {:<12} {:>8} particles  dp {:g}  h {:g}\n", w.name, w.particles.size(), w.dp, w.h());

@@ -3,28 +3,63 @@
 #include "core/parallel.hpp"
 
 #include <algorithm>
+#include <limits>
 
 namespace mrsph {
+
+namespace {
+
+Real summation_density(const FluidBody& fluid, const NeighborList& inner, const std::vector<FluidContact>& contacts,
+                       std::size_t i) {
+  const FluidParticles& f = fluid.particles;
+  const Real rho0 = fluid.material.rho0();
+  const Real v0_i = f.mass[i] / rho0;
+  Real sum = fluid.kernel.W0() * v0_i;
+  for (const Neighbor& n : inner.of(i)) sum += n.W * f.mass[n.j] / rho0;
+  for (const FluidContact& c : contacts) {
+    const RealArray& vol = *c.boundary.vol;
+    for (const Neighbor& n : c.pairs.of(i)) sum += n.W * vol[n.j];
+  }
+  return rho0 / fluid.lattice_number_density * sum / v0_i;
+}
+
+// p_ref of FluidOptions::pressure_reference: the mean over the particles (equal masses: the
+// mass-weighted mean), summed in particle order so that runs stay bitwise reproducible.
+void update_reference_pressure(FluidBody& fluid) {
+  if (fluid.options.pressure_reference != PressureReference::Mean || fluid.particles.size() == 0) {
+    fluid.reference_pressure = 0.0;
+    return;
+  }
+  const FluidParticles& f = fluid.particles;
+  Real mass = 0.0, weighted = 0.0;
+  for (std::size_t i = 0; i < f.size(); ++i) {
+    mass += f.mass[i];
+    weighted += f.mass[i] * fluid.material.eos.pressure(f.rho[i]);
+  }
+  fluid.reference_pressure = weighted / mass;
+}
+
+}  // namespace
 
 void reinitialise_density(FluidBody& fluid, const NeighborList& inner, const std::vector<FluidContact>& contacts) {
   FluidParticles& f = fluid.particles;
   const Real rho0 = fluid.material.rho0();
-  const Real scale = rho0 / fluid.lattice_number_density;
-  const Real W0 = fluid.kernel.W0();
   const bool free_surface = fluid.options.density == DensityReinitialisation::FreeSurface;
   parallel_for_each(f.size(), [&](std::size_t i) {
-    const Real v0_i = f.mass[i] / rho0;
-    Real sum = W0 * v0_i;
-    for (const Neighbor& n : inner.of(i)) sum += n.W * f.mass[n.j] / rho0;
-    for (const FluidContact& c : contacts) {
-      const RealArray& vol = *c.boundary.vol;
-      for (const Neighbor& n : c.pairs.of(i)) sum += n.W * vol[n.j];
-    }
-    Real rho = scale * sum / v0_i;
+    Real rho = summation_density(fluid, inner, contacts, i);
     if (free_surface) rho = std::max(rho, rho0);
     f.rho[i] = rho;
     f.vol[i] = f.mass[i] / rho;
   });
+  update_reference_pressure(fluid);
+}
+
+Real smallest_support_fraction(const FluidBody& fluid, const NeighborList& inner,
+                               const std::vector<FluidContact>& contacts) {
+  const Real rho0 = fluid.material.rho0();
+  return -parallel_max(fluid.particles.size(), [&](std::size_t i) {
+    return -summation_density(fluid, inner, contacts, i) / rho0;
+  }, -std::numeric_limits<Real>::infinity());
 }
 
 }  // namespace mrsph

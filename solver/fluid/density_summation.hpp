@@ -2,6 +2,8 @@
 //   rho_sum,i = (rho0 / sigma0) [ W(0) + sum_j W_ij V0_j / V0_i + sum_a W_ia V_a / V0_i ],
 // with V0 = m / rho0 and sigma0 the lattice number density, so a particle in a full uniform lattice
 // gets exactly rho0. Internal flow: rho = rho_sum. Free surface: rho = max(rho_sum, rho0).
+// Then the reference pressure of the pair forces (FluidOptions::pressure_reference) is updated:
+// the mean pressure of the fluid, or 0.
 #pragma once
 
 #include "fluid/fluid_body.hpp"
@@ -9,5 +11,10 @@
 namespace mrsph {
 
 void reinitialise_density(FluidBody& fluid, const NeighborList& inner, const std::vector<FluidContact>& contacts);
+
+// The smallest rho_sum / rho0 over the fluid: about 1 where every particle's kernel support is
+// filled by fluid, walls or solids; about 0.5 or less on a free surface (half the support empty).
+Real smallest_support_fraction(const FluidBody& fluid, const NeighborList& inner,
+                               const std::vector<FluidContact>& contacts);
 
 }  // namespace mrsph

@@ -25,14 +25,27 @@ struct FluidMaterial {
 enum class DensityReinitialisation {
   Internal,     // rho = rho_sum: confined flow (METHOD.md section 2)
   FreeSurface,  // rho = max(rho_sum, rho0): a truncated kernel near the surface must not lower rho
+  Automatic,    // decided at initialisation (Simulation): FreeSurface under gravity, else Internal
 };
+
+// The pressure the pair forces are measured from (reports/pressure.md):
+//   Zero  p itself: a free surface, where p = 0 is the atmosphere
+//   Mean  p minus the fluid's mean pressure: in a confined fluid the pressure level is set by the
+//         particle count against the volume, not by the flow, and it grows as c^2; through the
+//         zero-order error of the pressure gradient it would act as a spurious force
+enum class PressureReference { Zero, Mean, Automatic };
 
 struct FluidOptions {
   DensityReinitialisation density = DensityReinitialisation::Internal;
+  PressureReference pressure_reference = PressureReference::Zero;
   Real transport_velocity_alpha = 0.0;  // 0: no transport-velocity correction
   // Initial particle relaxation (transport_velocity.hpp): this many shifts of the fluid particles
   // towards a uniform distribution before t = 0, walls and solids held still. 0: the lattice as cut.
   int relaxation_steps = 0;
+  // Before the relaxation, each particle moved by a random offset of up to this fraction of dp in
+  // x and y (seeded: runs stay reproducible): a perfect lattice is an equilibrium of the shift, so
+  // relaxation alone leaves it a lattice, which a straining flow collapses (reports/pressure.md).
+  Real relaxation_perturbation = 0.0;
   Real reference_velocity = 1.0;        // U_ref, a floor for the advection criterion
   // Divide the viscous operator by its lattice second moment (kernel/lattice_moments.hpp) so the
   // effective viscosity on a regular distribution is the physical one; off: the paper's code,
@@ -52,6 +65,7 @@ struct FluidBody {
   FluidParticles particles;
   Real lattice_number_density;  // sigma0 for this dp and h
   Real lattice_laplacian;       // M2 for this dp and h, with the viscous regularisation 0.01 h
+  Real reference_pressure = 0.0;  // subtracted from p in the pair forces (PressureReference)
 
   FluidBody(std::string body_name, Real spacing, Real h_over_dp)
       : name(std::move(body_name)), dp(spacing), kernel(h_over_dp * spacing),

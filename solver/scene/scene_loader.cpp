@@ -156,9 +156,12 @@ FluidBody read_fluid(const SceneNode& node, const DomainBox& box, double& budget
                                                                                          : EquationOfStateKind::Linear;
   m.viscosity = node.non_negative_or("viscosity", 0.0);
 
+  // Without viscosity nothing else damps the particle-scale motion: the momentum dissipation is on
+  // unless the scene says otherwise (reports/pressure.md, still water tank).
+  fluid.riemann.momentum = m.viscosity == 0.0;
   if (const auto r = node.optional_child("riemann")) {
     fluid.riemann.continuity = r->flag_or("continuity", true);
-    fluid.riemann.momentum = r->flag_or("momentum", false);
+    fluid.riemann.momentum = r->flag_or("momentum", fluid.riemann.momentum);
     fluid.riemann.damp_separating = r->choice_or("limiter", {"approaching", "separating"}, "approaching") == "separating";
     fluid.riemann.limiter_eta = r->positive_or("eta", 3.0);
     r->finish();
@@ -166,11 +169,19 @@ FluidBody read_fluid(const SceneNode& node, const DomainBox& box, double& budget
   fluid.riemann.configure(m.eos.rho0, m.eos.c0);
 
   FluidOptions& o = fluid.options;
-  o.density = node.choice_or("density_reinitialisation", {"internal", "free_surface"}, "internal") == "free_surface"
-                  ? DensityReinitialisation::FreeSurface
-                  : DensityReinitialisation::Internal;
+  const std::string density = node.choice_or("density_reinitialisation", {"automatic", "internal", "free_surface"}, "automatic");
+  o.density = density == "internal"     ? DensityReinitialisation::Internal
+              : density == "free_surface" ? DensityReinitialisation::FreeSurface
+                                          : DensityReinitialisation::Automatic;
+  const std::string reference = node.choice_or("pressure_reference", {"automatic", "mean", "zero"}, "automatic");
+  o.pressure_reference = reference == "mean"   ? PressureReference::Mean
+                         : reference == "zero" ? PressureReference::Zero
+                                               : PressureReference::Automatic;
   o.transport_velocity_alpha = node.non_negative_or("transport_velocity_alpha", 0.0);
   o.relaxation_steps = node.count_or("relaxation_steps", 0, 100000);
+  o.relaxation_perturbation = node.non_negative_or("relaxation_perturbation", 0.0);
+  if (o.relaxation_perturbation > 0.5)
+    node.fail("relaxation_perturbation", fmt::format("expected a fraction of dp in [0, 0.5], got {:g}", o.relaxation_perturbation));
   o.reference_velocity = node.positive_or("reference_velocity", 1.0);
   o.viscous_lattice_correction = node.flag_or("viscous_lattice_correction", o.viscous_lattice_correction);
   o.advection_cfl = node.positive_or("advection_cfl", o.advection_cfl);
@@ -497,7 +508,8 @@ LoadedScene build_scene(const Json& document, const std::string& file, const Sce
   root.finish();
 
   sim->initialise();
-  if (sim->has_fluid() && sim->fluid().options.relaxation_steps > 0) {  // the relaxation moved the particles
+  if (sim->has_fluid() && (sim->fluid().options.relaxation_steps > 0 || sim->fluid().options.relaxation_perturbation > 0.0)) {
+    // the perturbation and the relaxation moved the particles
     FluidParticles& f = sim->fluid().particles;
     for (std::size_t i = 0; i < f.size(); ++i) f.vel[i] = initial_velocity_at(fluid_velocity, f.pos[i]);
   }

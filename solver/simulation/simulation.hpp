@@ -104,7 +104,11 @@ class Simulation {
   std::vector<FluidContact> contacts_;
   std::size_t rebuilds_since_sort_ = 0;  // rebuilds so far; every kSortInterval-th one reorders
   void build_pair_lists();
-  // Initial particle relaxation (FluidOptions::relaxation_steps), bodies held still.
+  // Fluid options left to the scene (DensityReinitialisation and PressureReference Automatic):
+  // a free surface where gravity acts along an axis that is not periodic, else a confined fluid.
+  void resolve_automatic_fluid_options();
+  // Initial particle relaxation (FluidOptions::relaxation_steps), bodies held still, after the
+  // perturbation of FluidOptions::relaxation_perturbation.
   void relax_fluid_particles();
 };
 
