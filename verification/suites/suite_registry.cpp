@@ -5,6 +5,7 @@
 #include "suites/speed_accuracy_suite.hpp"
 #include "suites/momentum_suite.hpp"
 #include "suites/oscillating_plate_suite.hpp"
+#include "suites/pressure_suite.hpp"
 #include "suites/stability_suite.hpp"
 #include "suites/turek_hron_suite.hpp"
 #include "suites/valve_suite.hpp"
@@ -34,6 +35,8 @@ const std::vector<SuiteEntry>& registered_suites() {
        run_valve_suite},
       {"fish", "passively flapping tethered fish-like body: flapping frequency, amplitudes, Lissajous ratio, travelling wave",
        run_fish_suite},
+      {"pressure", "pressure and forces: Turek-Hron CFD1-3 drag, lift, St at three resolutions and sound speeds; still water tank; Taylor-Green vortex",
+       run_pressure_suite},
   };
   return suites;
 }

@@ -1,0 +1,94 @@
+"""Figures of the pressure suite: drag and lift of the cylinder benchmarks against Turek & Hron over
+resolution and sound speed, the CFD3 lift history, the still tank's pressure profile, and the
+Taylor-Green vortex's errors over time."""
+import math
+import os
+
+from plot_common import load_summary, plt, read_csv, save, suite_dir
+
+directory = suite_dir()
+summary = load_summary(directory)
+refs = summary.get("cylinder_reference", {})
+cylinder = [r for r in summary["runs"] if "benchmark" in r["config"]]
+
+
+def value(run, name):
+    return run["metrics"].get(name, math.nan) if not run["diverged"] else math.nan
+
+
+benchmarks = sorted({r["config"]["benchmark"] for r in cylinder})
+if benchmarks:
+    fig, axes = plt.subplots(2, len(benchmarks), figsize=(4.2 * len(benchmarks), 6.5), squeeze=False)
+    for col, name in enumerate(benchmarks):
+        runs = [r for r in cylinder if r["config"]["benchmark"] == name]
+        ref = refs.get(name, {})
+        for row, (metric, ref_key) in enumerate([("drag_mean", "drag_mean" if name == "CFD3" else "drag"),
+                                                 ("lift_amplitude" if name == "CFD3" else "lift_mean",
+                                                  "lift_amplitude" if name == "CFD3" else "lift")]):
+            ax = axes[row][col]
+            factors = sorted({round(r["config"]["sound_speed"]) for r in runs})
+            for c in factors:
+                pts = sorted((r["config"]["resolution"], value(r, metric)) for r in runs if round(r["config"]["sound_speed"]) == c)
+                ax.plot([p[0] for p in pts], [p[1] for p in pts], "o-", label=f"c = {c} U0")
+            if ref_key in ref:
+                ax.axhline(ref[ref_key], color="k", lw=0.8, ls="--", label="Turek & Hron 2006")
+            ax.set_xscale("log", base=2)
+            ax.set_xlabel("D / dp")
+            ax.set_ylabel(metric.replace("_", " ") + " / (rho U0^2 D)")
+            ax.set_title(name)
+            ax.legend(fontsize=7)
+    save(fig, directory, "pressure_cylinder_forces.png")
+
+cfd3 = [r for r in cylinder if r["config"]["benchmark"] == "CFD3"]
+if cfd3:
+    fig, ax = plt.subplots(figsize=(10, 3.5))
+    for r in sorted(cfd3, key=lambda r: (r["config"]["resolution"], r["config"]["sound_speed"])):
+        path = os.path.join(directory, f"CFD3_res{r['config']['resolution']}_c{round(r['config']['sound_speed'])}", "forces.csv")
+        if not os.path.exists(path):
+            continue
+        d = read_csv(path)
+        ax.plot(d["time"], d["fy"], lw=0.5, label=r["case"] + f", St {value(r, 'strouhal'):.3f}")
+    ax.set_xlabel("t U0 / D")
+    ax.set_ylabel("lift / (rho U0^2 D)")
+    ax.set_title(f"CFD3 (Turek & Hron: St {refs.get('CFD3', {}).get('strouhal', math.nan):.4f}, "
+                 f"lift amplitude {refs.get('CFD3', {}).get('lift_amplitude', math.nan):.3f})")
+    ax.legend(fontsize=7)
+    save(fig, directory, "pressure_cfd3_lift.png")
+
+profile_path = os.path.join(directory, "tank_profiles.csv")
+if os.path.exists(profile_path):
+    p = read_csv(profile_path)
+    fig, (ax, ax_err) = plt.subplots(1, 2, figsize=(9, 4.5))
+    keys = sorted(set(zip(p["resolution"], p["sound_speed_factor"])))
+    for res, c in keys:
+        sel = [k for k in range(len(p["resolution"])) if p["resolution"][k] == res and p["sound_speed_factor"][k] == c]
+        depth = [p["depth_over_H"][k] for k in sel]
+        ax.plot([p["pressure_over_rho_g_H"][k] for k in sel], depth, "o-", ms=3, label=f"H/dp = {res:g}, c = {c:g} sqrt(2gH)")
+        ax_err.plot([p["pressure_over_rho_g_H"][k] - p["hydrostatic_over_rho_g_H"][k] for k in sel], depth, "o-", ms=3)
+    ax.plot([0, 1], [0, 1], "k--", lw=0.8, label="rho g (H - y)")
+    ax.set_xlabel("p / (rho g H)")
+    ax.set_ylabel("depth (H - y) / H")
+    ax.invert_yaxis()
+    ax.legend(fontsize=7)
+    ax_err.axvspan(-0.01, 0.01, color="0.9", label="issue 17: 1 %")
+    ax_err.set_xlabel("(p - rho g (H - y)) / (rho g H), mean over particles and time")
+    ax_err.invert_yaxis()
+    ax_err.legend(fontsize=7)
+    save(fig, directory, "pressure_tank_profile.png")
+
+decay_path = os.path.join(directory, "taylor_green_decay.csv")
+if os.path.exists(decay_path):
+    d = read_csv(decay_path)
+    fig, axes = plt.subplots(1, 3, figsize=(13, 3.8))
+    keys = sorted(set(zip(d["resolution"], d["sound_speed_factor"])))
+    for res, c in keys:
+        sel = [k for k in range(len(d["time"])) if d["resolution"][k] == res and d["sound_speed_factor"][k] == c]
+        t = [d["time"][k] for k in sel]
+        for ax, col in zip(axes, ["velocity_l2", "energy_ratio", "pressure_l2"]):
+            ax.plot(t, [d[col][k] for k in sel], "o-", ms=3, label=f"L/dp = {res:g}, c = {c:g} U")
+    for ax, label in zip(axes, ["velocity L2 error", "kinetic energy / analytic", "pressure L2 error"]):
+        ax.set_xlabel("t U / L")
+        ax.set_title(label)
+    axes[2].set_yscale("log")
+    axes[0].legend(fontsize=7)
+    save(fig, directory, "pressure_taylor_green.png")

@@ -1,0 +1,21 @@
+// verify --suite pressure: the fluid's pressure and the forces it puts on bodies, against answers
+// that do not come from SPH (reports/pressure.md).
+//   Turek & Hron CFD1-CFD3 (Re = 20, 100 steady; 200 periodic): drag, lift, Strouhal number on a
+//     resolution ladder and at three sound speeds (the incompressible limit must not depend on c)
+//   still water tank: pressure against rho g (H - y) after settling, and its noise
+//   Taylor-Green vortex: velocity decay and the pressure field against the analytic solution
+#pragma once
+
+#include "suites/suite.hpp"
+
+namespace mrsph::verification {
+
+SuiteSummary run_pressure_suite(const SuiteContext& ctx);
+
+// The parts, each adding its runs, checks and tables to the summary (pressure_fields.cpp holds
+// the tank and the vortex).
+void run_cylinder_benchmarks(const SuiteContext& ctx, SuiteSummary& summary);
+void run_hydrostatic_tank(const SuiteContext& ctx, SuiteSummary& summary);
+void run_taylor_green(const SuiteContext& ctx, SuiteSummary& summary);
+
+}  // namespace mrsph::verification
