@@ -8,7 +8,6 @@
 #include "simulation/runner.hpp"
 
 #include <CLI/CLI.hpp>
-
 #include <fmt/format.h>
 #include <tbb/info.h>
 
