@@ -37,6 +37,7 @@ if benchmarks:
             ax.set_ylabel(metric.replace("_", " ") + " / (rho U0^2 D)")
             ax.set_title(name)
             ax.legend(fontsize=7)
+    fig.tight_layout()
     save(fig, directory, "pressure_cylinder_forces.png")
 
 cfd3 = [r for r in cylinder if r["config"]["benchmark"] == "CFD3"]
