@@ -33,13 +33,14 @@ void clear_boundary_impulses(std::vector<FluidContact>& contacts) {
 
 void add_boundary_impulses(std::vector<FluidContact>& contacts, Real dt) {
   for (FluidContact& c : contacts) {
+    if (!c.records_impulse) continue;
     c.step_impulse += dt * total_force_on_boundary(c);
     c.step_duration += dt;
   }
 }
 
 Vec2 mean_force_on_boundary(const FluidContact& contact) {
-  if (contact.step_duration > 0.0) return contact.step_impulse / contact.step_duration;
+  if (contact.records_impulse && contact.step_duration > 0.0) return contact.step_impulse / contact.step_duration;
   return total_force_on_boundary(contact);
 }
 

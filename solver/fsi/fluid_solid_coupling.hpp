@@ -22,12 +22,12 @@ void set_force_from_fluid(const FluidContact& contact, SolidParticles& solid);
 // Total force of the fluid on a boundary body in the current acoustic step.
 Vec2 total_force_on_boundary(const FluidContact& contact);
 
-// The impulse record of every contact (FluidContact::step_impulse): cleared at the start of an
-// advection step; a kick of the fluid by dt adds dt times the boundary's share of it.
+// The impulse record of the contacts that keep one (FluidContact::records_impulse): cleared at the
+// start of an advection step; a kick of the fluid by dt adds dt times the boundary's share of it.
 void clear_boundary_impulses(std::vector<FluidContact>& contacts);
 void add_boundary_impulses(std::vector<FluidContact>& contacts, Real dt);
-// The force of the fluid on a boundary averaged over the last advection step (the current one if
-// no step has been taken yet).
+// The force of the fluid on a boundary averaged over the last advection step (the current
+// acoustic step's if the contact keeps no record or no step has been taken yet).
 Vec2 mean_force_on_boundary(const FluidContact& contact);
 
 void begin_kinematics_average(SolidParticles& solid);

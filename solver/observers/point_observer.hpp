@@ -40,6 +40,9 @@ class PointObserver {
   const ObserverSpec& spec() const { return spec_; }
   std::vector<std::string> columns() const;
   std::vector<Real> sample(const Simulation& sim) const;
+  // The fluid contacts (Simulation::fluid_contacts) whose force this observer reads: they must keep
+  // their impulse record (FluidContact::records_impulse).
+  const std::vector<std::size_t>& force_contacts() const { return contact_indices_; }
 
  private:
   enum class Target { Fluid, Solid, Boundaries, SolidPair };

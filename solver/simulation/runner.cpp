@@ -69,6 +69,7 @@ RunResult run_simulation(Simulation& sim, Schedule& schedule, const std::vector<
   for (const ObserverSpec& spec : observer_specs) {
     observers.emplace_back(spec, sim);
     state.series.push_back(ObserverSeries{spec.name, observers.back().columns(), {}, {}});
+    for (std::size_t k : observers.back().force_contacts()) sim.fluid_contacts()[k].records_impulse = true;
   }
   auto record = [&] {
     for (std::size_t k = 0; k < observers.size(); ++k) {
