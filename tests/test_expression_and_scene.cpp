@@ -152,21 +152,20 @@ TEST_CASE("Left to the defaults, the fluid is treated as its flow needs", "[scen
       "end_time": 1)" + extra + "}");
     return s.simulation->fluid().options;
   };
-  const std::string& closed = tank;
   const std::string gravity = R"(, "body_force": {"constant": [0, -9.81]})";
   // Gravity on an axis that is not periodic: a free surface, pressure measured from zero.
-  FluidOptions o = fluid_of(closed, "", gravity);
+  FluidOptions o = fluid_of(tank, "", gravity);
   CHECK(o.density == DensityReinitialisation::FreeSurface);
   CHECK(o.pressure_reference == PressureReference::Zero);
   // No gravity: a confined fluid, whose pressure level only reflects its particle count.
-  o = fluid_of(closed, "", "");
+  o = fluid_of(tank, "", "");
   CHECK(o.density == DensityReinitialisation::Internal);
   CHECK(o.pressure_reference == PressureReference::Mean);
   // A constant force along a periodic axis drives a confined flow.
   o = fluid_of(channel, "", R"(, "body_force": {"constant": [0.1, 0]})");
   CHECK(o.density == DensityReinitialisation::Internal);
   // What the scene states is kept.
-  o = fluid_of(closed, R"(, "density_reinitialisation": "internal", "pressure_reference": "zero")", gravity);
+  o = fluid_of(tank, R"(, "density_reinitialisation": "internal", "pressure_reference": "zero")", gravity);
   CHECK(o.density == DensityReinitialisation::Internal);
   CHECK(o.pressure_reference == PressureReference::Zero);
 

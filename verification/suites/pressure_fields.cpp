@@ -153,15 +153,6 @@ void run_vortex(const SuiteContext& ctx, VortexRun& out, CsvTable& decay) {
   r.metrics["samples"] = samples;
 }
 
-double metric_of(const SuiteRun& r, const std::string& name) {
-  return !r.diverged && r.metrics.contains(name) ? r.metrics[name].get<double>() : NAN;
-}
-
-void check_at_most_or_missing(SuiteSummary& summary, const std::string& name, double value, double limit, const std::string& source) {
-  if (!std::isfinite(value)) summary.check_missing(name, "the run diverged", source);
-  else summary.check_at_most(name, value, limit, source);
-}
-
 }  // namespace
 
 void run_hydrostatic_tank(const SuiteContext& ctx, SuiteSummary& summary) {
@@ -179,12 +170,12 @@ void run_hydrostatic_tank(const SuiteContext& ctx, SuiteSummary& summary) {
   if (ctx.quick) {
     // 20 particles over the depth: the time-mean pressure must be hydrostatic to 5 % of rho g H.
     check_at_most_or_missing(summary, "tank H/dp=20: largest depth-bin error of the mean pressure (of rho g H)",
-                             metric_of(records[0], "profile_error"), 0.05, source + " (coarse: 5 %)");
+                             run_metric(records[0], "profile_error"), 0.05, source + " (coarse: 5 %)");
   } else {
     check_at_most_or_missing(summary, "tank H/dp=40: largest depth-bin error of the mean pressure (of rho g H)",
-                             metric_of(records[1], "profile_error"), 0.01, source);
+                             run_metric(records[1], "profile_error"), 0.01, source);
     check_at_most_or_missing(summary, "tank H/dp=40: pressure noise about the hydrostatic profile (of rho g H)",
-                             metric_of(records[1], "pressure_noise"), 0.02, source);
+                             run_metric(records[1], "pressure_noise"), 0.02, source);
   }
   for (SuiteRun& r : records) summary.add_run(std::move(r));
 }
@@ -210,12 +201,12 @@ void run_taylor_green(const SuiteContext& ctx, SuiteSummary& summary) {
     // The velocity field within 5 % (quick, 50 particles per wavelength) or 2 % (full, 100) of the
     // analytic one at t = 1: the vortex's decay is viscous, not numerical.
     check_at_most_or_missing(summary, fmt::format("{}: velocity L2 error at t = 1", r.record.case_name),
-                             metric_of(r.record, "velocity_l2_t1"), ctx.quick ? 0.05 : 0.02, source);
+                             run_metric(r.record, "velocity_l2_t1"), ctx.quick ? 0.05 : 0.02, source);
     // The pressure field within 10 % at t = 0.5 in full mode: what weakly compressible SPH with
     // density diffusion reaches at 100 particles per wavelength (Antuono et al. 2010, Sun et al. 2017).
     if (!ctx.quick)
       check_at_most_or_missing(summary, fmt::format("{}: pressure L2 error at t = 0.5", r.record.case_name),
-                               metric_of(r.record, "pressure_l2_t0.5"), 0.10, source);
+                               run_metric(r.record, "pressure_l2_t0.5"), 0.10, source);
   }
   for (VortexRun& r : runs) summary.add_run(std::move(r.record));
 }

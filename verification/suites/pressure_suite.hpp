@@ -8,6 +8,8 @@
 
 #include "suites/suite.hpp"
 
+#include <string>
+
 namespace mrsph::verification {
 
 SuiteSummary run_pressure_suite(const SuiteContext& ctx);
@@ -17,5 +19,14 @@ SuiteSummary run_pressure_suite(const SuiteContext& ctx);
 void run_cylinder_benchmarks(const SuiteContext& ctx, SuiteSummary& summary);
 void run_hydrostatic_tank(const SuiteContext& ctx, SuiteSummary& summary);
 void run_taylor_green(const SuiteContext& ctx, SuiteSummary& summary);
+
+// Shared by the parts: a run's metric (NaN if the run diverged or did not measure it), and checks
+// that record a missing value as a failed check.
+double run_metric(const SuiteRun& run, const std::string& name);
+void check_at_most_or_missing(SuiteSummary& summary, const std::string& name, double value, double limit,
+                              const std::string& source);
+// |value - reference| <= tolerance |reference|
+void check_relative_or_missing(SuiteSummary& summary, const std::string& name, double value, double reference,
+                               double tolerance, const std::string& source);
 
 }  // namespace mrsph::verification
