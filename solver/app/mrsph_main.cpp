@@ -43,11 +43,17 @@ void print_scene(const mrsph::LoadedScene& scene) {
     const bool free_surface = f.options.density == mrsph::DensityReinitialisation::FreeSurface;
     fmt::print("           {} fluid: pressure forces from {}; Riemann dissipation in continuity {}, in momentum {};"
                " emptiest kernel support {:.0f} % filled\n",
-               free_surface ? "free-surface" : "confined",
+               free_surface ? "free-surface" : sim.open_boundaries.empty() ? "confined" : "open (inlet/outlet)",
                f.options.pressure_reference == mrsph::PressureReference::Mean ? "the mean pressure" : "zero",
                f.riemann.continuity ? "on" : "off", f.riemann.momentum ? "on" : "off",
                100.0 * mrsph::smallest_support_fraction(f, sim.fluid_inner(), sim.fluid_contacts()));
   }
+  for (const auto& b : sim.open_boundaries)
+    fmt::print("open       {:<12} {} {} = {:g}, buffer {:g} deep, {} condition\n", b.name, b.side > 0 ? "upper" : "lower",
+               b.axis == 0 ? "x" : "y", b.plane, b.width,
+               b.condition == mrsph::OpenBoundaryCondition::Velocity ? "velocity"
+               : b.reflection_time > 0.0 ? fmt::format("weakly reflecting pressure (tau {:g})", b.reflection_time)
+                                         : std::string("pressure"));
   for (const auto& w : sim.walls())
     fmt::print("wall       {:<12} {:>8} particles  dp {:g}  h {:g}\n", w.name, w.particles.size(), w.dp, w.h());
   for (const auto& s : sim.solids()) {

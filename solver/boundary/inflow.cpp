@@ -18,10 +18,14 @@ Vec2 ParabolicInflowProfile::velocity(const Vec2& p, Real t) const {
   return Vec2(u, 0.0);
 }
 
+Vec2 inflow_velocity(const InflowProfile& profile, const Vec2& p, Real t) {
+  return std::visit([&](const auto& prof) { return prof.velocity(p, t); }, profile);
+}
+
 void InflowBuffer::apply(FluidParticles& fluid, Real t, const DomainBox& box) const {
   parallel_for_each(fluid.size(), [&](std::size_t i) {
     const Vec2 p = box.wrap(fluid.pos[i]);
-    if (region->contains(p)) fluid.vel[i] = std::visit([&](const auto& prof) { return prof.velocity(p, t); }, profile);
+    if (region->contains(p)) fluid.vel[i] = inflow_velocity(profile, p, t);
   }, kGrainSimpleLoop);
 }
 

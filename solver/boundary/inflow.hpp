@@ -3,6 +3,7 @@
 // step; density and pressure are left alone.
 //   Womersley (pulsatile; the plane-channel solution of womersley_profile.hpp, CASES.md section 3):
 //     u_x = u_W(y, t), u_y = 0
+//   expression: u(x, y, t) and v(x, y, t) written in the scene (a pulse, a measured waveform)
 //   parabolic channel (Turek & Hron 2006, with the factor 4 the paper drops, CASES.md section 1):
 //     u_x = 1.5 Ubar(t) 4 (y - y0)(H - (y - y0)) / H^2,
 //     Ubar(t) = U0 (1 - cos(pi t / t_ramp)) / 2 for t < t_ramp, else U0;  u_y = 0.
@@ -13,6 +14,7 @@
 #include "neighbor/domain_box.hpp"
 #include "particles/fluid_particles.hpp"
 
+#include <functional>
 #include <memory>
 #include <variant>
 
@@ -33,7 +35,13 @@ struct WomersleyInflowProfile {
   Vec2 velocity(const Vec2& p, Real t) const { return Vec2(profile.velocity(p.y(), t), 0.0); }
 };
 
-using InflowProfile = std::variant<ParabolicInflowProfile, WomersleyInflowProfile>;
+struct ExpressionInflowProfile {
+  std::function<Vec2(const Vec2&, Real)> field;  // (position, time) -> velocity
+  Vec2 velocity(const Vec2& p, Real t) const { return field(p, t); }
+};
+
+using InflowProfile = std::variant<ParabolicInflowProfile, WomersleyInflowProfile, ExpressionInflowProfile>;
+Vec2 inflow_velocity(const InflowProfile& profile, const Vec2& p, Real t);
 
 struct InflowBuffer {
   ShapePtr region;

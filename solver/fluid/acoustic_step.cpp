@@ -32,14 +32,16 @@ void compute_pressure_interaction(FluidBody& fluid, const NeighborList& inner, s
   FluidParticles& f = fluid.particles;
   const RiemannDissipation& riemann = fluid.riemann;
   for (FluidContact& c : contacts) c.pair_pressure_force.resize(c.pairs.pair_count());
+  const Real scale = fluid.options.pressure_lattice_correction ? 1.0 / fluid.lattice_gradient : 1.0;
 
   parallel_for_each(f.size(), [&](std::size_t i) {
     const Real p_i = f.p[i], rho_i = f.rho[i], vol_i = f.vol[i];
     const Real p_i_relative = p_i - 2.0 * fluid.reference_pressure;  // p_i + p_j - 2 p_ref
+    const Real vol_i_scaled = scale * vol_i;
     Vec2 force = Vec2::Zero();
     Real drho = 0.0;
     for (const Neighbor& n : inner.of(i)) {
-      force -= (vol_i * f.vol[n.j] * (p_i_relative + f.p[n.j]) * n.dW) * n.e;
+      force -= (vol_i_scaled * f.vol[n.j] * (p_i_relative + f.p[n.j]) * n.dW) * n.e;
       if (riemann.continuity) drho += f.vol[n.j] * riemann.continuity_term(p_i, f.p[n.j]) * n.dW;
     }
     const Vec2 acc_prior = f.force_prior[i] / f.mass[i] + body_acceleration;
@@ -52,7 +54,7 @@ void compute_pressure_interaction(FluidBody& fluid, const NeighborList& inner, s
         const Neighbor& n = list[k];
         const Vec2 r_ai = -n.r * n.e;  // r_a - r_i
         const Real p_d = p_i + rho_i * std::max(Real(0), (acc_prior - abar[n.j]).dot(r_ai));
-        const Vec2 pair = -(vol_i * vol[n.j] * (p_i_relative + p_d) * n.dW) * n.e;
+        const Vec2 pair = -(vol_i_scaled * vol[n.j] * (p_i_relative + p_d) * n.dW) * n.e;
         c.pair_pressure_force[first + k] = pair;
         force += pair;
         if (riemann.continuity) drho += vol[n.j] * riemann.continuity_term(p_i, p_d) * n.dW;
@@ -66,6 +68,7 @@ void compute_pressure_interaction(FluidBody& fluid, const NeighborList& inner, s
 void kick(FluidBody& fluid, Real dt, const Vec2& body_acceleration) {
   FluidParticles& f = fluid.particles;
   parallel_for_each(f.size(), [&](std::size_t i) {
+    if (!f.in_domain(i)) return;  // an open boundary's buffer: the velocity is imposed
     f.vel[i] += dt * ((f.pressure_force[i] + f.dissipation_force[i] + f.force_prior[i]) / f.mass[i] + body_acceleration);
   }, kGrainSimpleLoop);
 }

@@ -19,6 +19,10 @@ void shift_towards_uniform_distribution(FluidBody& fluid, const NeighborList& in
   // Shifts are computed from the unshifted positions (cached geometry), then applied.
   Vec2Array shift(f.size());
   parallel_for_each(f.size(), [&](std::size_t i) {
+    if (!f.in_domain(i)) {  // an open boundary's buffer: positions follow the imposed velocity
+      shift[i] = Vec2::Zero();
+      return;
+    }
     Vec2 residue = Vec2::Zero();
     for (const Neighbor& n : inner.of(i)) residue += (f.vol[n.j] * n.dW) * n.e;
     for (const FluidContact& c : contacts) {

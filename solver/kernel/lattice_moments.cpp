@@ -26,4 +26,11 @@ Real lattice_laplacian_moment(const WendlandC2& kernel, Real dp, Real regularisa
   });
 }
 
+Real lattice_gradient_moment(const WendlandC2& kernel, Real dp) {
+  return lattice_sum(kernel, dp, [&](Real x, Real y) {
+    const Real r = std::hypot(x, y);
+    return r > 0.0 ? -dp * dp * x * x * kernel.dW(r) / r : 0.0;
+  });
+}
+
 }  // namespace mrsph

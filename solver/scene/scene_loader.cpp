@@ -2,6 +2,7 @@
 
 #include "boundary/initial_velocity.hpp"
 #include "scene/initial_velocity_reader.hpp"
+#include "scene/open_boundary_reader.hpp"
 #include "scene/region_reader.hpp"
 
 #include <fmt/format.h>
@@ -131,6 +132,7 @@ FluidBody read_fluid(const SceneNode& node, const DomainBox& box, double& budget
     node.fail("relaxation_perturbation", fmt::format("expected a fraction of dp in [0, 0.5], got {:g}", o.relaxation_perturbation));
   o.reference_velocity = node.positive_or("reference_velocity", 1.0);
   o.viscous_lattice_correction = node.flag_or("viscous_lattice_correction", o.viscous_lattice_correction);
+  o.pressure_lattice_correction = node.flag_or("pressure_lattice_correction", o.pressure_lattice_correction);
   o.advection_cfl = node.positive_or("advection_cfl", o.advection_cfl);
   o.acoustic_cfl = node.positive_or("acoustic_cfl", o.acoustic_cfl);
   velocity = read_initial_velocity(node);
@@ -379,30 +381,9 @@ LoadedScene build_scene(const Json& document, const std::string& file, const Sce
   }
   if (const auto node = root.optional_child("inflow")) {
     if (!sim->has_fluid()) node->fail("", "an inflow needs a fluid body");
-    InflowBuffer inflow;
-    inflow.region = read_region(*node, "buffer");
-    const SceneNode profile = node->child("profile");
-    if (profile.choice("type", {"parabolic_channel", "womersley"}) == "parabolic_channel") {
-      ParabolicInflowProfile p;
-      p.channel_bottom = profile.number_or("bottom", 0.0);
-      p.channel_height = profile.positive("height");
-      p.mean_velocity = profile.number("mean_velocity");
-      p.ramp_time = profile.non_negative_or("ramp_time", 0.0);
-      inflow.profile = p;
-    } else {
-      WomersleyInflowProfile w;
-      w.profile.channel_bottom = profile.number_or("bottom", 0.0);
-      w.profile.channel_height = profile.positive("height");
-      w.profile.pressure_gradient_amplitude = profile.number("pressure_gradient_amplitude");
-      w.profile.angular_frequency = profile.positive("angular_frequency");
-      w.profile.density = profile.positive("density");
-      w.profile.kinematic_viscosity = profile.positive("kinematic_viscosity");
-      inflow.profile = w;
-    }
-    profile.finish();
-    node->finish();
-    sim->inflow = std::move(inflow);
+    sim->inflow = read_inflow(*node);
   }
+  sim->open_boundaries = read_open_boundaries(root, *sim);
 
   std::string schedule_name = "multi_step_position_verlet";
   if (const auto node = root.optional_child("schedule")) {

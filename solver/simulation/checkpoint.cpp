@@ -11,7 +11,7 @@ namespace mrsph {
 namespace {
 
 constexpr char kMagic[8] = {'M', 'R', 'S', 'P', 'H', 'C', 'K', '1'};
-constexpr std::uint32_t kVersion = 2;  // 2: the compressibility record
+constexpr std::uint32_t kVersion = 3;  // 2: the compressibility record; 3: open boundaries (particle count, zones, ledgers)
 
 std::string read_all(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
@@ -43,15 +43,6 @@ struct Loader {
   template <class T>
   void operator()(std::vector<T>& a, const char* what) { a = r.array<T>(a.size(), what); }
 };
-
-// Particles is const for saving and mutable for loading.
-template <class Particles, class Visit>
-void visit_fluid(Particles& f, Visit&& v) {
-  v(f.pos, "fluid positions"); v(f.vel, "fluid velocities"); v(f.rho, "fluid densities"); v(f.p, "fluid pressures");
-  v(f.mass, "fluid masses"); v(f.vol, "fluid volumes"); v(f.drho_dt, "fluid density rates");
-  v(f.pressure_force, "fluid pressure forces"); v(f.dissipation_force, "fluid dissipation forces");
-  v(f.force_prior, "fluid prior forces");
-}
 
 template <class Particles, class Visit>
 void visit_solid(Particles& s, Visit&& v) {
@@ -95,7 +86,18 @@ std::string serialise_checkpoint(const Json& scene_document, const std::string& 
   }
   Saver save{w};
   w.value<std::uint8_t>(sim.has_fluid());
-  if (sim.has_fluid()) visit_fluid(sim.fluid().particles, save);
+  if (sim.has_fluid()) {
+    // Open boundaries create and delete particles: the count is part of the state.
+    w.value<std::uint64_t>(sim.fluid().particles.size());
+    FluidParticles::for_each_field(sim.fluid().particles, save);
+  }
+  w.value<std::uint64_t>(sim.open_boundaries.size());
+  for (const OpenBoundary& b : sim.open_boundaries) {
+    w.value(b.ledger.mass_into_domain);
+    w.value(b.ledger.created);
+    w.value(b.ledger.deleted);
+    w.array(b.mean_normal_velocity);
+  }
   w.value<std::uint64_t>(sim.fluid_contacts().size());
   for (const FluidContact& c : sim.fluid_contacts()) save(c.boundary_dissipation_reaction, "");
   w.value<std::uint64_t>(sim.solids().size());
@@ -153,7 +155,19 @@ void restore_checkpoint(const std::filesystem::path& path, Simulation& sim, Runn
   Loader load{r};
   const bool has_fluid = r.value<std::uint8_t>() != 0;
   if (has_fluid != sim.has_fluid()) throw std::runtime_error(path.string() + ": fluid body mismatch with the scene");
-  if (has_fluid) visit_fluid(sim.fluid().particles, load);
+  if (has_fluid) {
+    sim.fluid().particles.resize(r.value<std::uint64_t>());
+    FluidParticles::for_each_field(sim.fluid().particles, load);
+  }
+  const auto open_boundaries = r.value<std::uint64_t>();
+  if (open_boundaries != sim.open_boundaries.size())
+    throw std::runtime_error(path.string() + ": open boundaries differ from the scene");
+  for (OpenBoundary& b : sim.open_boundaries) {
+    b.ledger.mass_into_domain = r.value<Real>();
+    b.ledger.created = r.value<long long>();
+    b.ledger.deleted = r.value<long long>();
+    b.mean_normal_velocity = r.array<Real>(BinaryReader::kAnySize, "open boundary mean velocities");
+  }
   const auto contacts = r.value<std::uint64_t>();
   if (contacts != sim.fluid_contacts().size()) throw std::runtime_error(path.string() + ": boundary bodies differ from the scene");
   for (FluidContact& c : sim.fluid_contacts()) load(c.boundary_dissipation_reaction, "boundary dissipation reactions");

@@ -27,6 +27,16 @@ nlohmann::ordered_json compressibility_json(const CompressibilityRecord& record)
   return {{"max_density_deviation", extreme(record.density_deviation)}, {"max_mach", extreme(record.mach)}};
 }
 
+// Per open boundary: the mass that crossed its plane into the domain and the particles made and
+// removed; with the domain's mass now, the mass balance can be checked from the summary alone.
+nlohmann::ordered_json open_boundaries_json(const Simulation& sim) {
+  nlohmann::ordered_json list = nlohmann::ordered_json::array();
+  for (const OpenBoundary& b : sim.open_boundaries)
+    list.push_back({{"name", b.name}, {"mass_into_domain", b.ledger.mass_into_domain},
+                    {"particles_created", b.ledger.created}, {"particles_deleted", b.ledger.deleted}});
+  return {{"domain_mass", domain_mass(sim.fluid().particles)}, {"boundaries", list}};
+}
+
 nlohmann::ordered_json run_summary_json(const LoadedScene& scene, const RunResult& result, int threads) {
   nlohmann::ordered_json j;
   j["scene"] = scene.name;
@@ -44,6 +54,7 @@ nlohmann::ordered_json run_summary_json(const LoadedScene& scene, const RunResul
   j["cost"] = {{"wall_s", result.wall_s}, {"cpu_s", result.cpu_s},
                {"particles", particle_counts(*scene.simulation)}, {"steps", step_counts(result.steps)}};
   if (scene.simulation->has_fluid()) j["compressibility"] = compressibility_json(result.compressibility);
+  if (!scene.simulation->open_boundaries.empty()) j["open_boundaries"] = open_boundaries_json(*scene.simulation);
   nlohmann::ordered_json files = nlohmann::ordered_json::array();
   for (const auto& s : result.series) files.push_back("observers/" + s.name + ".csv");
   j["observers"] = files;

@@ -70,12 +70,24 @@ void Simulation::initialise() {
     c.boundary = solid.boundary_view();
     contacts_.push_back(std::move(c));
   }
+  classify_fluid_zones(fluid_->particles, open_boundaries);
   rebuild_fluid_relations();
   resolve_automatic_fluid_options();
   relax_fluid_particles();
   reinitialise_density(*fluid_, fluid_inner_, contacts_);
   FluidParticles& f = fluid_->particles;
   for (std::size_t i = 0; i < f.size(); ++i) f.p[i] = fluid_->material.eos.pressure(f.rho[i]);
+  if (!open_boundaries.empty()) impose_buffer_states(*fluid_, open_boundaries, time, 0.0);
+}
+
+void Simulation::impose_boundary_states(Real dt) {
+  if (!fluid_) return;
+  if (dt > 0.0 && inflow) inflow->apply(fluid_->particles, time, box_);
+  if (!open_boundaries.empty()) impose_buffer_states(*fluid_, open_boundaries, time, dt);
+}
+
+void Simulation::exchange_open_boundary_particles() {
+  if (fluid_ && !open_boundaries.empty()) exchange_buffer_particles(*fluid_, open_boundaries);
 }
 
 namespace {
@@ -114,8 +126,11 @@ void Simulation::resolve_automatic_fluid_options() {
       if (!box_.periodic[axis] && body_force.constant[axis] != 0.0) gravity_on_open_axis = true;
     o.density = gravity_on_open_axis ? DensityReinitialisation::FreeSurface : DensityReinitialisation::Internal;
   }
+  // An open boundary sets the pressure level (a pressure condition, or the fluid beyond an inlet):
+  // the pressure is absolute, as under a free surface.
+  const bool confined = o.density == DensityReinitialisation::Internal && open_boundaries.empty();
   if (o.pressure_reference == PressureReference::Automatic)
-    o.pressure_reference = o.density == DensityReinitialisation::Internal ? PressureReference::Mean : PressureReference::Zero;
+    o.pressure_reference = confined ? PressureReference::Mean : PressureReference::Zero;
 }
 
 void Simulation::relax_fluid_particles() {

@@ -5,6 +5,7 @@
 
 #include "boundary/body_force.hpp"
 #include "boundary/inflow.hpp"
+#include "boundary/open_boundary.hpp"
 #include "boundary/wall_body.hpp"
 #include "core/errors.hpp"
 #include "fluid/fluid_body.hpp"
@@ -72,6 +73,7 @@ class Simulation {
   BodyForce body_force;
   bool body_force_on_solids = true;
   std::optional<InflowBuffer> inflow;
+  std::vector<OpenBoundary> open_boundaries;
   SolidKinematics solid_kinematics = SolidKinematics::Averaged;
   // Contacts between solid bodies (set before initialise()); with any, all solids sub-step together.
   std::vector<SolidContact> solid_contacts;
@@ -88,6 +90,12 @@ class Simulation {
   // restored positions exactly as the interrupted run had them (no wrap, no reordering).
   void restore_relations(std::size_t rebuild_count);
   std::size_t rebuild_count() const { return rebuilds_since_sort_; }
+  // The buffer states of the open boundaries at the current time (after a density
+  // re-initialisation: dt = 0), and after an acoustic step of size dt also the periodic inflow.
+  void impose_boundary_states(Real dt);
+  // Open boundaries: particles into and out of the buffers, created and deleted (open_boundary.hpp).
+  // Once per advection step, before the relations are rebuilt.
+  void exchange_open_boundary_particles();
   // Throws DivergenceError on NaN/Inf, runaway speed, a particle out of the domain or J <= 0.
   void check_divergence() const;
 

@@ -55,6 +55,7 @@ Real PositionVerletSchedule::advance(Simulation& sim, Real max_step) {
 
   // Algorithm 1, once per advection step.
   reinitialise_density(fluid, inner, contacts);
+  sim.impose_boundary_states(0.0);
   compute_viscous_force(fluid, inner, contacts);
   correct_transport_velocity(fluid, inner, contacts);
   for (SolidBody& solid : sim.solids()) update_solid_normals(solid);
@@ -79,9 +80,10 @@ Real PositionVerletSchedule::advance(Simulation& sim, Real max_step) {
     for (SolidBody& solid : sim.solids()) end_kinematics_average(solid.particles, dt, sim.solid_kinematics);
     elapsed += dt;
     sim.time = last ? t0 + Dt : t0 + elapsed;
-    if (sim.inflow) sim.inflow->apply(fluid.particles, sim.time, sim.box());
+    sim.impose_boundary_states(dt);
     ++sim.steps.acoustic;
   }
+  sim.exchange_open_boundary_particles();
   sim.check_divergence();
   sim.rebuild_fluid_relations();
   ++sim.steps.advection;

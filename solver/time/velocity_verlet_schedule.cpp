@@ -45,6 +45,7 @@ Real VelocityVerletSchedule::advance(Simulation& sim, Real max_step) {
   const Real Dt = std::min(advection_time_step(fluid, sim.body_force.at(t0)), max_step);
 
   reinitialise_density(fluid, inner, contacts);
+  sim.impose_boundary_states(0.0);
   compute_viscous_force(fluid, inner, contacts);
   correct_transport_velocity(fluid, inner, contacts);
   for (SolidBody& solid : sim.solids()) update_solid_normals(solid);
@@ -73,9 +74,10 @@ Real VelocityVerletSchedule::advance(Simulation& sim, Real max_step) {
     evaluate_forces(sim, sim.body_force.at(sim.time));
     kick(fluid, 0.5 * dt, sim.body_force.at(sim.time));
     add_boundary_impulses(contacts, 0.5 * dt);
-    if (sim.inflow) sim.inflow->apply(fluid.particles, sim.time, sim.box());
+    sim.impose_boundary_states(dt);
     ++sim.steps.acoustic;
   }
+  sim.exchange_open_boundary_particles();
   sim.check_divergence();
   sim.rebuild_fluid_relations();
   ++sim.steps.advection;

@@ -1,0 +1,206 @@
+#include "boundary/open_boundary.hpp"
+
+#include "core/parallel.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace mrsph {
+
+namespace {
+
+std::uint8_t zone_of(std::size_t k) { return static_cast<std::uint8_t>(k + 1); }
+
+// The bins along the plane (width dp) and the bin of a position.
+struct PlaneBins {
+  int tangent;
+  Real lower, width;
+  std::size_t count;
+  PlaneBins(const OpenBoundary& b, Real dp)
+      : tangent(1 - b.axis), lower(b.span_lower), width(dp),
+        count(std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil((b.span_upper - b.span_lower) / dp)))) {}
+  std::size_t of(const Vec2& p) const {
+    const Real k = std::floor((p[tangent] - lower) / width);
+    return static_cast<std::size_t>(std::clamp<Real>(k, 0.0, static_cast<Real>(count - 1)));
+  }
+};
+
+// Extrapolation from the domain's particles within one kernel support of the plane (the band):
+// per bin, the mean velocity, pressure and depth (an empty bin takes its nearest non-empty one);
+// over the whole band, the sums for a least-squares line of the pressure against depth.
+struct BandMeans {
+  Vec2Array vel;
+  RealArray p, depth;
+  Real n = 0, sum_d = 0, sum_dd = 0, sum_p = 0, sum_dp = 0;
+
+  // The pressure gradient along the outward normal: least squares through the band, or through
+  // the band and the point (0, p_plane) when the plane's pressure is prescribed.
+  Real slope() const { return n < 2 ? 0.0 : (sum_dp - sum_d * sum_p / n) / std::max(sum_dd - sum_d * sum_d / n, 1e-300); }
+  Real slope_through(Real p_plane) const { return n < 1 ? 0.0 : (sum_dp - p_plane * sum_d) / sum_dd; }
+};
+
+BandMeans domain_band_means(const FluidBody& fluid, const OpenBoundary& b, const PlaneBins& bins) {
+  const FluidParticles& f = fluid.particles;
+  const Real band = fluid.kernel.cutoff();
+  BandMeans m{Vec2Array(bins.count, Vec2::Zero()), RealArray(bins.count, 0.0), RealArray(bins.count, 0.0)};
+  std::vector<int> count(bins.count, 0);
+  for (std::size_t i = 0; i < f.size(); ++i) {  // in particle order: bitwise reproducible
+    if (!f.in_domain(i)) continue;
+    const Real d = b.depth(f.pos[i]);
+    if (d > 0.0 || d <= -band) continue;
+    const std::size_t k = bins.of(f.pos[i]);
+    m.vel[k] += f.vel[i];
+    m.p[k] += f.p[i];
+    m.depth[k] += d;
+    ++count[k];
+    m.n += 1;
+    m.sum_d += d;
+    m.sum_dd += d * d;
+    m.sum_p += f.p[i];
+    m.sum_dp += d * f.p[i];
+  }
+  std::vector<std::size_t> source(bins.count, bins.count);  // the non-empty bin each bin reads
+  for (std::size_t k = 0; k < bins.count; ++k)
+    if (count[k] > 0) {
+      m.vel[k] /= count[k];
+      m.p[k] /= count[k];
+      m.depth[k] /= count[k];
+      source[k] = k;
+    }
+  for (std::size_t k = 1; k < bins.count; ++k)  // nearest from below, then from above if nearer
+    if (source[k] == bins.count) source[k] = source[k - 1];
+  for (std::size_t k = bins.count - 1; k-- > 0;)
+    if (count[k] == 0 && source[k + 1] < bins.count &&
+        (source[k] == bins.count || source[k + 1] - k < k - source[k]))
+      source[k] = source[k + 1];
+  BandMeans filled = m;
+  for (std::size_t k = 0; k < bins.count; ++k)
+    if (source[k] < bins.count) {
+      filled.vel[k] = m.vel[source[k]];
+      filled.p[k] = m.p[source[k]];
+      filled.depth[k] = m.depth[source[k]];
+    }
+  return filled;
+}
+
+// ubar_n of the weakly reflecting condition, relaxed towards u_n over tau (exact for a constant
+// u_n over the step); set to u_n on first use.
+void relax_mean_normal_velocity(OpenBoundary& b, const BandMeans& means, Real dt) {
+  const std::size_t n = means.vel.size();
+  const bool first = b.mean_normal_velocity.size() != n;
+  if (first) b.mean_normal_velocity.assign(n, 0.0);
+  const Real weight = first ? 1.0 : 1.0 - std::exp(-dt / b.reflection_time);
+  for (std::size_t k = 0; k < n; ++k) {
+    const Real u_n = means.vel[k].dot(b.normal());
+    b.mean_normal_velocity[k] += weight * (u_n - b.mean_normal_velocity[k]);
+  }
+}
+
+// Fills the space the flow opened at the buffer's far end: in each bin along the plane, new
+// particles behind the outermost one (copies of it), at the spacing along the normal at which
+// particles of mass m have the buffer's density: dx = m / (rho dp). A lattice of spacing dp would
+// stand for rho0 in the density summation, not for the buffer's pressure.
+void refill_buffer(FluidBody& fluid, OpenBoundary& b, std::size_t k, const std::vector<bool>& removed) {
+  FluidParticles& f = fluid.particles;
+  const PlaneBins bins(b, fluid.dp);
+  std::vector<std::size_t> outermost(bins.count, f.size());
+  const std::uint8_t zone = zone_of(k);
+  for (std::size_t i = 0; i < removed.size(); ++i) {
+    if (f.zone[i] != zone || removed[i]) continue;
+    std::size_t& o = outermost[bins.of(f.pos[i])];
+    if (o == f.size() || b.depth(f.pos[i]) > b.depth(f.pos[o])) o = i;
+  }
+  for (std::size_t bin = 0; bin < bins.count; ++bin) {
+    std::size_t last = outermost[bin];
+    if (last >= removed.size()) continue;  // no buffer particle in this bin: nothing to continue
+    for (;;) {
+      const Real dx = f.mass[last] / (f.rho[last] * fluid.dp);
+      if (b.depth(f.pos[last]) + dx > b.width) break;
+      f.append_copy_of(last);
+      f.pos.back() += dx * b.normal();
+      last = f.size() - 1;
+      ++b.ledger.created;
+    }
+  }
+}
+
+}  // namespace
+
+void classify_fluid_zones(FluidParticles& fluid, const std::vector<OpenBoundary>& boundaries) {
+  for (std::size_t i = 0; i < fluid.size(); ++i) {
+    fluid.zone[i] = kDomainZone;
+    for (std::size_t k = 0; k < boundaries.size(); ++k)
+      if (boundaries[k].depth(fluid.pos[i]) > 0.0) fluid.zone[i] = zone_of(k);
+  }
+}
+
+void exchange_buffer_particles(FluidBody& fluid, std::vector<OpenBoundary>& boundaries) {
+  FluidParticles& f = fluid.particles;
+  std::vector<bool> remove(f.size(), false);
+  for (std::size_t i = 0; i < f.size(); ++i) {
+    if (f.in_domain(i)) {
+      for (std::size_t k = 0; k < boundaries.size(); ++k)
+        if (boundaries[k].depth(f.pos[i]) > 0.0) {
+          f.zone[i] = zone_of(k);
+          boundaries[k].ledger.mass_into_domain -= f.mass[i];
+          break;
+        }
+    } else if (OpenBoundary& b = boundaries[f.zone[i] - 1]; b.depth(f.pos[i]) <= 0.0) {
+      f.zone[i] = kDomainZone;
+      b.ledger.mass_into_domain += f.mass[i];
+    }
+    if (!f.in_domain(i)) {
+      OpenBoundary& b = boundaries[f.zone[i] - 1];
+      if (b.depth(f.pos[i]) > b.width) {
+        remove[i] = true;
+        ++b.ledger.deleted;
+      }
+    }
+  }
+  for (std::size_t k = 0; k < boundaries.size(); ++k) refill_buffer(fluid, boundaries[k], k, remove);
+  remove.resize(f.size(), false);
+  f.erase(remove);
+}
+
+void impose_buffer_states(FluidBody& fluid, std::vector<OpenBoundary>& boundaries, Real t, Real dt) {
+  FluidParticles& f = fluid.particles;
+  const EquationOfState& eos = fluid.material.eos;
+  for (std::size_t k = 0; k < boundaries.size(); ++k) {
+    OpenBoundary& b = boundaries[k];
+    const PlaneBins bins(b, fluid.dp);
+    const BandMeans means = domain_band_means(fluid, b, bins);
+    const bool reflecting = b.condition == OpenBoundaryCondition::Velocity || b.reflection_time <= 0.0;
+    if (!reflecting) relax_mean_normal_velocity(b, means, dt);
+    const Real p_b = b.condition == OpenBoundaryCondition::Pressure ? b.pressure(t) : 0.0;
+    // Pressure continued linearly into the buffer: a constant buffer pressure would put a kink at
+    // the plane that the kernel smears, moving the prescribed value half a support outwards.
+    const Real slope = b.condition == OpenBoundaryCondition::Pressure ? means.slope_through(p_b) : means.slope();
+    const Real impedance = eos.impedance();
+    const std::uint8_t zone = zone_of(k);
+    parallel_for_each(f.size(), [&](std::size_t i) {
+      if (f.zone[i] != zone) return;
+      const std::size_t bin = bins.of(f.pos[i]);
+      if (b.condition == OpenBoundaryCondition::Velocity) {
+        f.vel[i] = inflow_velocity(b.velocity, f.pos[i], t);
+        f.p[i] = means.p[bin] + slope * (b.depth(f.pos[i]) - means.depth[bin]);
+      } else {
+        const Real u_n = means.vel[bin].dot(b.normal());
+        f.vel[i] = u_n * b.normal();
+        f.p[i] = p_b + slope * b.depth(f.pos[i]);
+        if (!reflecting) f.p[i] += impedance * (u_n - b.mean_normal_velocity[bin]);
+      }
+      f.rho[i] = eos.density(f.p[i]);
+      f.vol[i] = f.mass[i] / f.rho[i];
+      f.drho_dt[i] = 0.0;
+    }, kGrainSimpleLoop);
+  }
+}
+
+Real domain_mass(const FluidParticles& fluid) {
+  Real mass = 0.0;
+  for (std::size_t i = 0; i < fluid.size(); ++i)
+    if (fluid.in_domain(i)) mass += fluid.mass[i];
+  return mass;
+}
+
+}  // namespace mrsph
