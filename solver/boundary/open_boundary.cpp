@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 
 namespace mrsph {
 
@@ -171,23 +172,30 @@ void impose_buffer_states(FluidBody& fluid, std::vector<OpenBoundary>& boundarie
     const BandMeans means = domain_band_means(fluid, b, bins);
     const bool reflecting = b.condition == OpenBoundaryCondition::Velocity || b.reflection_time <= 0.0;
     if (!reflecting) relax_mean_normal_velocity(b, means, dt);
-    const Real p_b = b.condition == OpenBoundaryCondition::Pressure ? b.pressure(t) : 0.0;
+    // Pressure condition: the pressure at the plane in each bin, p_b or, weakly reflecting,
+    // p_b + rho0 c (u_n - ubar_n).
+    RealArray plane_p(bins.count, 0.0);
+    if (b.condition == OpenBoundaryCondition::Pressure) {
+      const Real p_b = b.pressure(t);
+      for (std::size_t bin = 0; bin < bins.count; ++bin)
+        plane_p[bin] = reflecting ? p_b
+                                  : p_b + eos.impedance() * (means.vel[bin].dot(b.normal()) - b.mean_normal_velocity[bin]);
+    }
     // Pressure continued linearly into the buffer: a constant buffer pressure would put a kink at
     // the plane that the kernel smears, moving the prescribed value half a support outwards.
-    const Real slope = b.condition == OpenBoundaryCondition::Pressure ? means.slope_through(p_b) : means.slope();
-    const Real impedance = eos.impedance();
+    const Real mean_plane_p = std::accumulate(plane_p.begin(), plane_p.end(), 0.0) / static_cast<Real>(bins.count);
+    const Real slope = b.condition == OpenBoundaryCondition::Pressure ? means.slope_through(mean_plane_p) : means.slope();
     const std::uint8_t zone = zone_of(k);
     parallel_for_each(f.size(), [&](std::size_t i) {
       if (f.zone[i] != zone) return;
       const std::size_t bin = bins.of(f.pos[i]);
+      const Real depth = b.depth(f.pos[i]);
       if (b.condition == OpenBoundaryCondition::Velocity) {
         f.vel[i] = inflow_velocity(b.velocity, f.pos[i], t);
-        f.p[i] = means.p[bin] + slope * (b.depth(f.pos[i]) - means.depth[bin]);
+        f.p[i] = means.p[bin] + slope * (depth - means.depth[bin]);
       } else {
-        const Real u_n = means.vel[bin].dot(b.normal());
-        f.vel[i] = u_n * b.normal();
-        f.p[i] = p_b + slope * b.depth(f.pos[i]);
-        if (!reflecting) f.p[i] += impedance * (u_n - b.mean_normal_velocity[bin]);
+        f.vel[i] = means.vel[bin].dot(b.normal()) * b.normal();
+        f.p[i] = plane_p[bin] + slope * depth;
       }
       f.rho[i] = eos.density(f.p[i]);
       f.vol[i] = f.mass[i] / f.rho[i];

@@ -4,6 +4,7 @@
 #include "suites/fish_suite.hpp"
 #include "suites/speed_accuracy_suite.hpp"
 #include "suites/momentum_suite.hpp"
+#include "suites/open_boundary_suite.hpp"
 #include "suites/oscillating_plate_suite.hpp"
 #include "suites/pressure_suite.hpp"
 #include "suites/stability_suite.hpp"
@@ -37,6 +38,8 @@ const std::vector<SuiteEntry>& registered_suites() {
        run_fish_suite},
       {"pressure", "pressure and forces: Turek-Hron CFD1-3 drag, lift, St at three resolutions and sound speeds; still water tank; Taylor-Green vortex",
        run_pressure_suite},
+      {"open-boundaries", "inlets and outlets: Poiseuille by a pressure difference, buffer mass balance, pulse reflection, open-channel start-up",
+       run_open_boundary_suite},
   };
   return suites;
 }
