@@ -11,9 +11,10 @@
 // of the domain's particles at samples every 0.25 over (0, ramp_time] (t = 0 is the lattice as cut).
 #include "suites/open_boundary_suite.hpp"
 
-#include "report/reference_table.hpp"
+#include "io/csv_table.hpp"
 #include "suites/pressure_suite.hpp"
 #include "suites/scene_run.hpp"
+#include "suites/turek_hron_suite.hpp"
 
 #include <fmt/format.h>
 
@@ -30,6 +31,30 @@ void record_run(SuiteRun& r, const SceneRun& run, const std::string& name, Json 
   r.compressibility = compressibility_record(run);
   r.diverged = run.result.divergence.has_value();
   r.divergence = divergence_record(run);
+}
+
+// The profile across the channel in the middle half: mean u of the domain's particles in bins of
+// dp along y, beside the analytic one.
+void write_poiseuille_profile(const Simulation& sim, const LoadedScene& scene, const std::filesystem::path& path) {
+  const auto& p = scene.parameters;
+  const double H = p.at("H"), L = p.at("L"), mu = p.at("mu"), G = p.at("dp_in") / L, dp = p.at("dp");
+  const auto bins = static_cast<std::size_t>(std::lround(H / dp));
+  std::vector<double> sum(bins, 0.0);
+  std::vector<long> count(bins, 0);
+  const FluidParticles& f = sim.fluid().particles;
+  for (std::size_t i = 0; i < f.size(); ++i) {
+    if (!f.in_domain(i) || f.pos[i].x() < 0.25 * L || f.pos[i].x() > 0.75 * L) continue;
+    const auto k = std::min(bins - 1, static_cast<std::size_t>(std::max(0.0, f.pos[i].y() / dp)));
+    sum[k] += f.vel[i].x();
+    ++count[k];
+  }
+  CsvTable table;
+  table.columns = {"y_over_H", "u", "u_analytic"};
+  for (std::size_t k = 0; k < bins; ++k) {
+    const double y = (k + 0.5) * dp;
+    if (count[k] > 0) table.add_row({y / H, sum[k] / count[k], G * y * (H - y) / (2.0 * mu)});
+  }
+  table.write(path);
 }
 
 Json poiseuille_metrics(const Simulation& sim, const LoadedScene& scene, double mass0) {
@@ -70,7 +95,10 @@ SuiteRun run_poiseuille(const SuiteContext& ctx, int resolution, bool corrected)
   SuiteRun r;
   record_run(r, run, name, {{"resolution", resolution}, {"pressure_lattice_correction", corrected},
                             {"scene", "poiseuille_pressure.json"}, {"end_time", run.scene.run.end_time}});
-  if (!r.diverged) r.metrics = poiseuille_metrics(*run.scene.simulation, run.scene, mass0);
+  if (r.diverged) return r;
+  r.metrics = poiseuille_metrics(*run.scene.simulation, run.scene, mass0);
+  write_poiseuille_profile(*run.scene.simulation, run.scene,
+                           ctx.out_dir / fmt::format("poiseuille_profile_res{}{}.csv", resolution, corrected ? "" : "_uncorrected"));
   return r;
 }
 
@@ -101,10 +129,32 @@ SuiteRun run_pulse(const SuiteContext& ctx, double reflection_time) {
   return r;
 }
 
+// The density along the channel at a sample: per bin of D = 1 along x, the mean and the largest
+// |rho / rho0 - 1| of the domain's particles (rows: t, x of the bin's centre, mean, largest).
+void add_density_along_channel(const Simulation& sim, CsvTable& table) {
+  const FluidParticles& f = sim.fluid().particles;
+  const double rho0 = sim.fluid().material.rho0();
+  const double length = sim.open_boundaries[1].plane - sim.open_boundaries[0].plane;
+  const auto bins = static_cast<std::size_t>(std::ceil(length));
+  std::vector<double> sum(bins, 0.0), largest(bins, 0.0);
+  std::vector<long> count(bins, 0);
+  for (std::size_t i = 0; i < f.size(); ++i) {
+    if (!f.in_domain(i)) continue;
+    const auto k = std::min(bins - 1, static_cast<std::size_t>(std::max(0.0, f.pos[i].x() - sim.open_boundaries[0].plane)));
+    sum[k] += f.rho[i] / rho0 - 1.0;
+    largest[k] = std::max(largest[k], std::abs(f.rho[i] / rho0 - 1.0));
+    ++count[k];
+  }
+  for (std::size_t k = 0; k < bins; ++k)
+    if (count[k] > 0) table.add_row({sim.time, sim.open_boundaries[0].plane + k + 0.5, sum[k] / count[k], largest[k]});
+}
+
 SuiteRun run_channel_startup(const SuiteContext& ctx, int resolution, int sound_speed_factor) {
   const std::string name = fmt::format("CFD2 channel start-up D/dp={} c={}U0", resolution, sound_speed_factor);
   if (ctx.log) ctx.log("open-boundaries: " + name);
   double deviation = 0.0, near_planes = 0.0, ramp = 0.0;
+  CsvTable along;
+  along.columns = {"time", "x", "mean_density_deviation", "largest_density_deviation"};
   SceneRun run = run_scene(ctx, "turek_hron_cfd_open.json",
                            {fmt::format("parameters.resolution={}", resolution),
                             fmt::format("parameters.sound_speed_factor={}", sound_speed_factor)},
@@ -116,6 +166,7 @@ SuiteRun run_channel_startup(const SuiteContext& ctx, int resolution, int sound_
                              o.on_sample = [&](const Simulation& sim) {
                                const FluidParticles& f = sim.fluid().particles;
                                const double rho0 = sim.fluid().material.rho0();
+                               if (std::fmod(sim.time + 1e-9, 5.0) < 1e-6) add_density_along_channel(sim, along);
                                for (std::size_t i = 0; i < f.size(); ++i) {
                                  if (!f.in_domain(i)) continue;
                                  const double d = std::abs(f.rho[i] / rho0 - 1.0);
@@ -129,7 +180,9 @@ SuiteRun run_channel_startup(const SuiteContext& ctx, int resolution, int sound_
   SuiteRun r;
   record_run(r, run, name, {{"resolution", resolution}, {"sound_speed_factor", sound_speed_factor},
                             {"scene", "turek_hron_cfd_open.json"}, {"ramp_time", ramp}});
-  if (!r.diverged) r.metrics = {{"ramp_density_deviation", deviation}, {"ramp_density_deviation_near_planes", near_planes}};
+  if (r.diverged) return r;
+  r.metrics = {{"ramp_density_deviation", deviation}, {"ramp_density_deviation_near_planes", near_planes}};
+  along.write(ctx.out_dir / fmt::format("ramp_density_res{}_c{}.csv", resolution, sound_speed_factor));
   return r;
 }
 
@@ -187,6 +240,39 @@ void run_channel_part(const SuiteContext& ctx, SuiteSummary& summary) {
   summary.add_run(std::move(high_c));
 }
 
+SuiteRun run_fsi2_open(const SuiteContext& ctx) {
+  const std::string name = "FSI2 case III, open channel";
+  if (ctx.log) ctx.log("open-boundaries: " + name);
+  SceneRun run = run_scene(ctx, "turek_hron_fsi2_open.json", {});
+  write_observer_series(run.result.series, ctx.out_dir / "fsi2_open");
+  SuiteRun r;
+  const double end = run.scene.run.end_time, settle = 100.0;  // 20 cycles after the oscillation settled
+  record_run(r, run, name, {{"scene", "turek_hron_fsi2_open.json"}, {"end_time", end}, {"settle", settle}});
+  if (!r.diverged) r.metrics = fsi2_metrics(series_named(run.result.series, "tip"), series_named(run.result.series, "forces"), end, settle);
+  return r;
+}
+
+// Full mode: the benchmarks in the benchmark's geometry, reported beside the periodic form
+// (reports/pressure.md, turek-hron.md): CFD2 (steady; ramp to t = 20, mean over t = 25-40), CFD3
+// (shedding sets in 20-40 after the ramp; mean over t = 60-100, 9 periods) at D/dp = 20, c = 10 U0,
+// and FSI2 case III.
+void run_benchmarks_part(const SuiteContext& ctx, SuiteSummary& summary) {
+  static const std::vector<BenchmarkCase> cases{{"CFD2", 100.0, 40.0, 25.0, false}, {"CFD3", 200.0, 100.0, 60.0, true}};
+  std::vector<CylinderRun> runs;
+  for (const BenchmarkCase& b : cases) runs.push_back({&b, 20, 10, {}, "turek_hron_cfd_open.json"});
+  SuiteRun fsi2;
+  run_cases(ctx, runs.size() + 1, [&](const SuiteContext& case_ctx, std::size_t k) {
+    if (k == 0) run_cylinder(case_ctx, runs[1]);  // the longest first
+    else if (k == 1) run_cylinder(case_ctx, runs[0]);
+    else fsi2 = run_fsi2_open(case_ctx);
+  });
+  for (CylinderRun& r : runs) {
+    r.record.case_name += " (open channel)";
+    summary.add_run(std::move(r.record));
+  }
+  summary.add_run(std::move(fsi2));
+}
+
 }  // namespace
 
 SuiteSummary run_open_boundary_suite(const SuiteContext& ctx) {
@@ -194,6 +280,9 @@ SuiteSummary run_open_boundary_suite(const SuiteContext& ctx) {
   run_poiseuille_part(ctx, summary);
   run_pulse_part(ctx, summary);
   run_channel_part(ctx, summary);
+  if (!ctx.quick) run_benchmarks_part(ctx, summary);
+  summary.write(ctx.out_dir);
+  render_figures(ctx, "plot_open_boundaries.py", summary);
   summary.write(ctx.out_dir);
   return summary;
 }

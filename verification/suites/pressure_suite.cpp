@@ -22,21 +22,6 @@ namespace mrsph::verification {
 
 namespace {
 
-struct BenchmarkCase {
-  std::string name;
-  double reynolds;
-  double end_time;
-  double window_start;  // the flow has settled (steady, or shedding at its own period)
-  bool shedding;        // CFD3
-};
-
-struct CylinderRun {
-  const BenchmarkCase* benchmark;
-  int resolution;          // D / dp
-  int sound_speed_factor;  // c / U0
-  SuiteRun record;
-};
-
 struct WindowStats {
   double mean = NAN, std = NAN;
 };
@@ -58,6 +43,8 @@ WindowStats window_stats(const ObserverSeries& s, std::size_t column, double sta
   return {mean, std::sqrt(std::max(0.0, sum2 / weight - mean * mean))};
 }
 
+}  // namespace
+
 void run_cylinder(const SuiteContext& ctx, CylinderRun& out) {
   const BenchmarkCase& b = *out.benchmark;
   const std::string name = fmt::format("{} D/dp={} c={}U0", b.name, out.resolution, out.sound_speed_factor);
@@ -65,7 +52,7 @@ void run_cylinder(const SuiteContext& ctx, CylinderRun& out) {
   const std::vector<std::string> overrides{fmt::format("parameters.Re={}", b.reynolds),
                                            fmt::format("parameters.resolution={}", out.resolution),
                                            fmt::format("parameters.sound_speed_factor={}", out.sound_speed_factor)};
-  SceneRun run = run_scene(ctx, "turek_hron_cfd.json", overrides, [&](const LoadedScene&) {
+  SceneRun run = run_scene(ctx, out.scene, overrides, [&](const LoadedScene&) {
     RunOptions options;
     options.end_time = b.end_time;
     return options;
@@ -76,8 +63,9 @@ void run_cylinder(const SuiteContext& ctx, CylinderRun& out) {
   r.case_name = name;
   r.config = {{"benchmark", b.name}, {"reynolds", b.reynolds}, {"resolution", out.resolution},
               {"dp", run.scene.parameters.at("dp")}, {"sound_speed", run.scene.parameters.at("sound_speed")},
-              {"end_time", b.end_time}, {"window_start", b.window_start}, {"scene", "turek_hron_cfd.json"},
-              {"channel", "periodic, 13 D with a 2 D inflow buffer (the benchmark: 25 D, free outflow)"}};
+              {"end_time", b.end_time}, {"window_start", b.window_start}, {"scene", out.scene},
+              {"channel", out.scene == "turek_hron_cfd.json" ? "periodic, 13 D with a 2 D inflow buffer (the benchmark: 25 D, free outflow)"
+                                                              : "the benchmark's: 25 D from a velocity inlet to a pressure outlet"}};
   r.cost = cost_json(run);
   r.compressibility = compressibility_record(run);
   r.diverged = run.result.divergence.has_value();
@@ -103,6 +91,8 @@ void run_cylinder(const SuiteContext& ctx, CylinderRun& out) {
   const std::vector<double> drag_smooth = moving_average(t, series_column(forces, 0), 0.5);
   if (const auto s = switching_period(t, drag_smooth, b.window_start)) r.metrics["drag_amplitude"] = 0.5 * (s->high_level - s->low_level);
 }
+
+namespace {
 
 class CylinderResults {
  public:

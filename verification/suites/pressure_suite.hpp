@@ -14,6 +14,27 @@ namespace mrsph::verification {
 
 SuiteSummary run_pressure_suite(const SuiteContext& ctx);
 
+// One Turek & Hron cylinder benchmark (CFD1-3) and one run of it (pressure_suite.cpp).
+struct BenchmarkCase {
+  std::string name;
+  double reynolds;
+  double end_time;
+  double window_start;  // the flow has settled (steady, or shedding at its own period)
+  bool shedding;        // CFD3
+};
+
+struct CylinderRun {
+  const BenchmarkCase* benchmark;
+  int resolution;          // D / dp
+  int sound_speed_factor;  // c / U0
+  SuiteRun record;
+  std::string scene = "turek_hron_cfd.json";  // or turek_hron_cfd_open.json, the benchmark's channel
+};
+
+// Runs it and fills its record: drag and lift means over the window; for CFD3 also St and the
+// lift and drag amplitudes.
+void run_cylinder(const SuiteContext& ctx, CylinderRun& out);
+
 // The parts, each adding its runs, checks and tables to the summary (pressure_fields.cpp holds
 // the tank and the vortex).
 void run_cylinder_benchmarks(const SuiteContext& ctx, SuiteSummary& summary);
