@@ -45,6 +45,9 @@ PointCloud fluid_snapshot(const Simulation& sim) {
   cloud.add_scalar("pressure", f.p);
   cloud.add_scalar("density", f.rho);
   cloud.add_scalar("vorticity", fluid_vorticity(sim));
+  if (!sim.open_boundaries.empty()) {  // 0: the domain; k: the buffer of open boundary k - 1
+    cloud.add_scalar("zone", RealArray(f.zone.begin(), f.zone.end()));
+  }
   return cloud;
 }
 
