@@ -116,6 +116,9 @@ void refill_buffer(FluidBody& fluid, OpenBoundary& b, std::size_t k, const std::
     if (last >= removed.size()) continue;  // no buffer particle in this bin: nothing to continue
     for (;;) {
       const Real dx = f.mass[last] / (f.rho[last] * fluid.dp);
+      // A density outside (rho0 / 2, 2 rho0), or not a number, is a diverging run (the divergence
+      // check that follows reports it): refill nothing rather than loop.
+      if (!(dx > 0.5 * fluid.dp && dx < 2.0 * fluid.dp)) break;
       if (b.depth(f.pos[last]) + dx > b.width) break;
       f.append_copy_of(last);
       f.pos.back() += dx * b.normal();
