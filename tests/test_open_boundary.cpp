@@ -139,3 +139,22 @@ TEST_CASE("Open boundaries: the exchange moves particles between buffer and doma
   CHECK(f.zone[4] == kDomainZone);  // the old particle 5 (0.99), now fifth
   CHECK(f.pos[4].x() == Approx(0.99));
 }
+
+TEST_CASE("The equation of state's background pressure is the pressure at rest, and density inverts pressure",
+          "[open_boundary][eos]") {
+  for (EquationOfStateKind kind : {EquationOfStateKind::Linear, EquationOfStateKind::Tait}) {
+    EquationOfState eos;
+    eos.kind = kind;
+    eos.rho0 = 1000.0;
+    eos.c0 = 10.0;
+    eos.background = 1333.0;
+    CHECK(eos.pressure(eos.rho0) == Approx(1333.0));
+    CHECK(eos.density(1333.0) == Approx(1000.0));
+    // (within the Tait law's range: p - p_b > -rho0 c^2 / 7)
+    for (double p : {-10000.0, 0.0, 500.0, 40000.0}) CHECK(eos.pressure(eos.density(p)) == Approx(p).margin(1e-9));
+    // the pressure differences, which drive the flow, do not depend on the background
+    EquationOfState none = eos;
+    none.background = 0.0;
+    CHECK(eos.pressure(1010.0) - eos.pressure(1000.0) == Approx(none.pressure(1010.0) - none.pressure(1000.0)));
+  }
+}

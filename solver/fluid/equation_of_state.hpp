@@ -1,6 +1,8 @@
-// Weakly-compressible equations of state.
-//   Tait (paper Eq. 3):  p = rho0 c^2 / gamma ((rho / rho0)^gamma - 1), gamma = 7.
-//   Linear (the paper's code): p = c^2 (rho - rho0); the same as Tait to first order in rho - rho0.
+// Weakly-compressible equations of state, with an optional background pressure p_b (0 in the paper):
+//   Tait (paper Eq. 3):  p = p_b + rho0 c^2 / gamma ((rho / rho0)^gamma - 1), gamma = 7.
+//   Linear (the paper's code): p = p_b + c^2 (rho - rho0); the same as Tait to first order in rho - rho0.
+// p_b is the pressure of the fluid at rest at rho0: a vein's transmural pressure under open
+// boundaries, which keeps the fluid out of tension where the flow draws the pressure down.
 #pragma once
 
 #include "core/types.hpp"
@@ -16,14 +18,15 @@ struct EquationOfState {
   Real rho0 = 1.0;
   Real c0 = 10.0;
   Real gamma = 7.0;
+  Real background = 0.0;  // p_b
 
   Real pressure(Real rho) const {
-    if (kind == EquationOfStateKind::Linear) return c0 * c0 * (rho - rho0);
-    return rho0 * c0 * c0 / gamma * (std::pow(rho / rho0, gamma) - 1.0);
+    if (kind == EquationOfStateKind::Linear) return background + c0 * c0 * (rho - rho0);
+    return background + rho0 * c0 * c0 / gamma * (std::pow(rho / rho0, gamma) - 1.0);
   }
   Real density(Real p) const {
-    if (kind == EquationOfStateKind::Linear) return rho0 + p / (c0 * c0);
-    return rho0 * std::pow(1.0 + gamma * p / (rho0 * c0 * c0), 1.0 / gamma);
+    if (kind == EquationOfStateKind::Linear) return rho0 + (p - background) / (c0 * c0);
+    return rho0 * std::pow(1.0 + gamma * (p - background) / (rho0 * c0 * c0), 1.0 / gamma);
   }
   // Acoustic impedance rho0 c0 used by the Riemann solver.
   Real impedance() const { return rho0 * c0; }

@@ -103,6 +103,7 @@ FluidBody read_fluid(const SceneNode& node, const DomainBox& box, double& budget
   m.eos.kind = node.choice_or("equation_of_state", {"linear", "tait"}, "linear") == "tait" ? EquationOfStateKind::Tait
                                                                                          : EquationOfStateKind::Linear;
   m.viscosity = node.non_negative_or("viscosity", 0.0);
+  m.eos.background = node.number_or("background_pressure", 0.0);
 
   // Without viscosity nothing else damps the particle-scale motion: the momentum dissipation is on
   // unless the scene says otherwise (reports/pressure.md, still water tank).
