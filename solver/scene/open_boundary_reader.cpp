@@ -74,6 +74,12 @@ void check_open_boundary(const SceneNode& node, const OpenBoundary& b, const Sim
     node.fail("width", fmt::format("the buffer ends at {} = {:g}, but the domain ends at {:g}: the box must reach at least "
                                    "one spacing (dp = {:g}) beyond the buffer", axis_name, far_end, bound, fluid.dp));
   const int t = 1 - b.axis;
+  if (b.span_lower < box.lower[t] || b.span_upper > box.upper[t])
+    node.fail("span", fmt::format("[{:g}, {:g}] reaches outside the domain [{:g}, {:g}] along {}", b.span_lower, b.span_upper,
+                                  box.lower[t], box.upper[t], t == 0 ? 'x' : 'y'));
+  if ((b.span_upper - b.span_lower) / fluid.dp > 1e6)
+    node.fail("span", fmt::format("holds {:g} fluid spacings; at most 10^6 (the buffer is extrapolated in bins of dp)",
+                                  (b.span_upper - b.span_lower) / fluid.dp));
   const auto in_buffer = [&](const Vec2& p) { return b.in_buffer(p) && p[t] > b.span_lower && p[t] < b.span_upper; };
   const auto check_body = [&](const Vec2Array& pos, const std::string& body) {
     for (const Vec2& p : pos)
