@@ -9,6 +9,7 @@ import sys
 
 from plot_common import plt, read_csv, save, suite_dir
 
+valve_directory = sys.argv.pop(2) if len(sys.argv) > 2 else None
 directory = suite_dir()
 
 profiles = sorted(glob.glob(os.path.join(directory, "poiseuille_profile_res*.csv")))
@@ -55,8 +56,8 @@ if ramps:
         ax.legend(fontsize=7)
     save(fig, directory, "open_channel_ramp_density.png")
 
-if len(sys.argv) > 2:
-    valves = [(wo, os.path.join(sys.argv[2], f"valve_wo{wo}")) for wo in (1, 5, 10)]
+if valve_directory:
+    valves = [(wo, os.path.join(valve_directory, f"valve_wo{wo}")) for wo in (1, 5, 10)]
     valves = [(wo, p) for wo, p in valves if os.path.exists(os.path.join(p, "observers", "top_tip.csv"))]
     if valves:
         fig, axes = plt.subplots(3, 1, figsize=(7, 8), sharex=True)
