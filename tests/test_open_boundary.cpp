@@ -122,7 +122,8 @@ TEST_CASE("Open boundaries: the exchange moves particles between buffer and doma
   for (std::size_t i = 0; i < xs.size(); ++i) {
     f.pos[i] = Vec2(xs[i], 0.05);
     f.mass[i] = 0.01;
-    f.rho[i] = 1.01;  // the buffer's density: spacing m / (rho dp) = 0.099
+    f.rho[i] = 1.01;                // the buffer's density: spacing m / (rho dp) = 0.099
+    f.vel[i] = Vec2(-0.1, 0.0);     // a back-flow through the outlet: the far end empties
   }
   classify_fluid_zones(f, boundaries);
   f.zone[1] = kDomainZone;  // it was in the domain at the last exchange
@@ -138,6 +139,14 @@ TEST_CASE("Open boundaries: the exchange moves particles between buffer and doma
   CHECK(f.zone[1] == 1);
   CHECK(f.zone[4] == kDomainZone);  // the old particle 5 (0.99), now fifth
   CHECK(f.pos[4].x() == Approx(0.99));
+
+  // Flowing out, the buffer's far end is where particles leave: nothing is made there.
+  for (Vec2& v : f.vel) v = Vec2(0.1, 0.0);
+  f.pos[5].x() = 1.45;  // the refilled particle has left
+  exchange_buffer_particles(fluid, boundaries);
+  CHECK(boundaries[0].ledger.created == 1);
+  CHECK(boundaries[0].ledger.deleted == 2);
+  CHECK(f.size() == 5);
 }
 
 TEST_CASE("The equation of state's background pressure is the pressure at rest, and density inverts pressure",

@@ -97,7 +97,8 @@ void relax_mean_normal_velocity(OpenBoundary& b, const BandMeans& means, Real dt
   }
 }
 
-// Fills the space the flow opened at the buffer's far end: in each bin along the plane, new
+// Fills the space the flow opened at the buffer's far end: in each bin along the plane where the
+// buffer moves towards the plane, new
 // particles behind the outermost one (copies of it), at the spacing along the normal at which
 // particles of mass m have the buffer's density: dx = m / (rho dp). A lattice of spacing dp would
 // stand for rho0 in the density summation, not for the buffer's pressure.
@@ -114,6 +115,10 @@ void refill_buffer(FluidBody& fluid, OpenBoundary& b, std::size_t k, const std::
   for (std::size_t bin = 0; bin < bins.count; ++bin) {
     std::size_t last = outermost[bin];
     if (last >= removed.size()) continue;  // no buffer particle in this bin: nothing to continue
+    // Only where the buffer moves towards the plane does its far end empty; where it moves out (an
+    // outflow), the far end is where particles leave, and a refill would only make particles that
+    // are deleted a step later.
+    if (f.vel[last].dot(b.normal()) >= 0.0) continue;
     for (;;) {
       const Real dx = f.mass[last] / (f.rho[last] * fluid.dp);
       // A density outside (rho0 / 2, 2 rho0), or not a number, is a diverging run (the divergence

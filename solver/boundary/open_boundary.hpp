@@ -20,8 +20,9 @@
 //   a buffer particle now in the domain   joins the domain
 //   a domain particle now in the buffer   joins the buffer
 //   a particle deeper than W              is deleted
-//   then, along each bin, new particles fill the space opened at the far end, at the normal
-//   spacing dx = m / (rho_b dp) at which the density summation sees the buffer's density rho_b
+//   then, in each bin where the buffer moves towards the plane, new particles fill the space
+//   opened at the far end, at the normal spacing dx = m / (rho_b dp) at which the density
+//   summation sees the buffer's density rho_b
 // Mass balance: the ledger counts the mass crossing the plane into the domain, so the domain's mass
 // changes by exactly the sum of the ledgers.
 #pragma once
