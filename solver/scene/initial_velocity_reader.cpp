@@ -5,32 +5,28 @@
 
 namespace mrsph {
 
-namespace {
-
-// u and v as expressions over x, y and the scene's parameters; both are checked at the origin
-// here, so a bad expression is reported with its key before any particle is made.
-VelocityField read_velocity_expressions(const SceneNode& node) {
+std::function<Vec2(const Vec2&, Real)> read_velocity_expressions(const SceneNode& node, bool of_time) {
   const std::string u = node.text("u"), v = node.text("v");
   ParameterTable table = node.context().parameters;
-  for (const char* reserved : {"x", "y"})
-    if (table.count(reserved)) node.fail("u", std::string("the parameter '") + reserved + "' hides the coordinate of the same name");
-  const auto evaluate = [table](const std::string& text, const Vec2& p) {
+  for (const char* reserved : {"x", "y", "t"})
+    if ((of_time || reserved[0] != 't') && table.count(reserved))
+      node.fail("u", std::string("the parameter '") + reserved + "' hides the variable of the same name");
+  const auto evaluate = [table, of_time](const std::string& text, const Vec2& p, Real t) {
     ParameterTable at = table;
     at["x"] = p.x();
     at["y"] = p.y();
+    if (of_time) at["t"] = t;
     return evaluate_expression(text, at);
   };
   for (const auto& [key, text] : {std::pair<const char*, std::string>{"u", u}, {"v", v}}) {
     try {
-      evaluate(text, Vec2::Zero());
+      evaluate(text, Vec2::Zero(), 0.0);
     } catch (const ExpressionError& e) {
       node.fail(key, e.what());
     }
   }
-  return VelocityField{[evaluate, u, v](const Vec2& p) { return Vec2(evaluate(u, p), evaluate(v, p)); }};
+  return [evaluate, u, v](const Vec2& p, Real t) { return Vec2(evaluate(u, p, t), evaluate(v, p, t)); };
 }
-
-}  // namespace
 
 InitialVelocity read_initial_velocity(const SceneNode& parent) {
   const auto node = parent.optional_child("initial_velocity");
@@ -50,7 +46,7 @@ InitialVelocity read_initial_velocity(const SceneNode& parent) {
     w.time = node->number_or("time", 0.0);
     field = w;
   } else if (type == "expression") {
-    field = read_velocity_expressions(*node);
+    field = VelocityField{[velocity = read_velocity_expressions(*node, false)](const Vec2& p) { return velocity(p, 0.0); }};
   } else {
     CantileverModeVelocity c;
     c.clamp_x = node->number("clamp_x");

@@ -9,9 +9,17 @@
 #include "boundary/initial_velocity.hpp"
 #include "scene/scene_node.hpp"
 
+#include <functional>
+
 namespace mrsph {
 
 // The parent's "initial_velocity" (zero if absent).
 InitialVelocity read_initial_velocity(const SceneNode& parent);
+
+// The node's "u" and "v": expressions of x, y (and t if of_time) and the scene's parameters, as a
+// velocity of (position, time). Both are evaluated at the origin (and t = 0) here, so a bad
+// expression is reported with its key before any particle is made; a parameter named like a
+// variable is refused.
+std::function<Vec2(const Vec2&, Real)> read_velocity_expressions(const SceneNode& node, bool of_time);
 
 }  // namespace mrsph

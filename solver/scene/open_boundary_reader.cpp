@@ -1,5 +1,6 @@
 #include "scene/open_boundary_reader.hpp"
 
+#include "scene/initial_velocity_reader.hpp"
 #include "scene/region_reader.hpp"
 
 #include <fmt/format.h>
@@ -12,35 +13,9 @@ namespace mrsph {
 
 namespace {
 
-// A scene parameter may not hide a variable of an expression.
-void check_not_hidden(const SceneNode& node, const std::string& key, std::initializer_list<const char*> variables) {
-  for (const char* v : variables)
-    if (node.context().parameters.count(v))
-      node.fail(key, std::string("the parameter '") + v + "' hides the variable of the same name");
-}
-
-ExpressionInflowProfile read_expression_profile(const SceneNode& node) {
-  check_not_hidden(node, "u", {"x", "y", "t"});
-  const std::string u = node.text("u"), v = node.text("v");
-  const auto evaluate = [table = node.context().parameters](const std::string& text, const Vec2& p, Real t) {
-    ParameterTable at = table;
-    at["x"] = p.x();
-    at["y"] = p.y();
-    at["t"] = t;
-    return evaluate_expression(text, at);
-  };
-  for (const auto& [key, text] : {std::pair<const char*, std::string>{"u", u}, {"v", v}}) {
-    try {
-      evaluate(text, Vec2::Zero(), 0.0);
-    } catch (const ExpressionError& e) {
-      node.fail(key, e.what());
-    }
-  }
-  return ExpressionInflowProfile{[evaluate, u, v](const Vec2& p, Real t) { return Vec2(evaluate(u, p, t), evaluate(v, p, t)); }};
-}
-
+// An expression of t and the scene's parameters (a parameter named t is refused).
 std::function<Real(Real)> read_time_function(const SceneNode& node, const std::string& key) {
-  check_not_hidden(node, key, {"t"});
+  if (node.context().parameters.count("t")) node.fail(key, "the parameter 't' hides the variable of the same name");
   const std::string text = node.text(key);
   const auto evaluate = [table = node.context().parameters, text](Real t) {
     ParameterTable at = table;
@@ -156,7 +131,7 @@ InflowProfile read_inflow_profile(const SceneNode& profile) {
     w.profile.kinematic_viscosity = profile.positive("kinematic_viscosity");
     result = w;
   } else {
-    result = read_expression_profile(profile);
+    result = ExpressionInflowProfile{read_velocity_expressions(profile, true)};
   }
   profile.finish();
   return result;
