@@ -1,3 +1,4 @@
+#include "checkpoint_fixture.hpp"
 #include "core/thread_limit.hpp"
 #include "simulation/checkpoint.hpp"
 #include "scene/scene_loader.hpp"
@@ -29,21 +30,6 @@ RunOptions options_for(const LoadedScene& s) {
   return o;
 }
 
-// A scene rebuilt from a checkpoint and restored, with the runner state to resume (as `mrsph restart`).
-struct Restored {
-  LoadedScene scene;
-  RunnerState resume;
-};
-
-Restored restore_from(const std::filesystem::path& checkpoint) {
-  const CheckpointHeader header = read_checkpoint_header(checkpoint);
-  Restored r{build_scene(header.scene_document, header.scene_file), {}};
-  for (const auto& spec : r.scene.observers)
-    r.resume.series.push_back(ObserverSeries{spec.name, PointObserver(spec, *r.scene.simulation).columns(), {}, {}});
-  restore_checkpoint(checkpoint, *r.scene.simulation, r.resume);
-  return r;
-}
-
 RunnerState runner_state(const RunResult& r) {
   RunnerState st;
   st.series = r.series;
@@ -72,19 +58,14 @@ TEST_CASE("A run restarted from a checkpoint equals the uninterrupted run bitwis
 
   // Stop at the first advection-step boundary after t = 0.4 (no step is shortened).
   LoadedScene first = load_scene(kScene, {});
-  std::atomic<bool> stop{false};
-  RunOptions o1 = options_for(first);
-  o1.checkpoint_path = dir / "checkpoint.bin";
-  o1.stop_requested = &stop;
-  o1.progress_interval_s = 0.0;
-  o1.on_progress = [&](const RunProgress& p) { if (p.time >= 0.4) stop = true; };
-  const RunResult part = run_simulation(*first.simulation, *first.schedule, first.observers, o1);
+  const auto checkpoint = dir / "checkpoint.bin";
+  const RunResult part = run_until_stopped(first, options_for(first), 0.4, checkpoint);
   REQUIRE(part.interrupted);
   REQUIRE_FALSE(part.completed);
-  REQUIRE(std::filesystem::exists(o1.checkpoint_path));
+  REQUIRE(std::filesystem::exists(checkpoint));
 
   // Restore into a freshly built scene and finish.
-  Restored restored = restore_from(o1.checkpoint_path);
+  Restored restored = restore_from(checkpoint);
   LoadedScene& second = restored.scene;
   CHECK(second.simulation->time == part.end_time_reached);
   RunOptions o2 = options_for(second);

@@ -1,13 +1,13 @@
 // Open boundaries (boundary/open_boundary.hpp): the mass balance of the buffers, checkpoints with a
 // changing particle count, and the buffer's rules on small hand-made particle sets.
 #include "boundary/open_boundary.hpp"
+#include "checkpoint_fixture.hpp"
 #include "scene/scene_loader.hpp"
 #include "simulation/checkpoint.hpp"
 #include "simulation/runner.hpp"
 
 #include <catch2/catch.hpp>
 
-#include <atomic>
 #include <cmath>
 #include <filesystem>
 
@@ -66,28 +66,19 @@ TEST_CASE("Open boundaries: a run restarted from a checkpoint equals the uninter
   REQUIRE(uninterrupted.completed);
 
   LoadedScene first = load_scene(kScene, kCoarse);
-  std::atomic<bool> stop{false};
-  RunOptions o1 = options(first);
-  o1.checkpoint_path = dir / "checkpoint.bin";
-  o1.stop_requested = &stop;
-  o1.progress_interval_s = 0.0;
-  o1.on_progress = [&](const RunProgress& p) { if (p.time >= 1.5) stop = true; };
-  const RunResult part = run_simulation(*first.simulation, *first.schedule, first.observers, o1);
+  const auto checkpoint = dir / "checkpoint.bin";
+  const RunResult part = run_until_stopped(first, options(first), 1.5, checkpoint);
   REQUIRE(part.interrupted);
   const long long created_before = first.simulation->open_boundaries[0].ledger.created;
   const long long deleted_before = first.simulation->open_boundaries[1].ledger.deleted;
   CHECK(created_before > 0);
   CHECK(deleted_before > 0);
 
-  const CheckpointHeader header = read_checkpoint_header(o1.checkpoint_path);
-  LoadedScene second = build_scene(header.scene_document, header.scene_file);
-  RunnerState resume;
-  for (const auto& spec : second.observers)
-    resume.series.push_back(ObserverSeries{spec.name, PointObserver(spec, *second.simulation).columns(), {}, {}});
-  restore_checkpoint(o1.checkpoint_path, *second.simulation, resume);
+  Restored restored = restore_from(checkpoint);
+  LoadedScene& second = restored.scene;
   CHECK(second.simulation->fluid().particles.size() == first.simulation->fluid().particles.size());
   RunOptions o2 = options(second);
-  o2.resume = &resume;
+  o2.resume = &restored.resume;
   const RunResult rest = run_simulation(*second.simulation, *second.schedule, second.observers, o2);
   REQUIRE(rest.completed);
   CHECK(second.simulation->open_boundaries[0].ledger.created > created_before);
