@@ -60,23 +60,23 @@ BandMeans domain_band_means(const FluidBody& fluid, const OpenBoundary& b, const
     m.sum_p += f.p[i];
     m.sum_dp += d * f.p[i];
   }
-  std::vector<std::size_t> source(bins.count, bins.count);  // the non-empty bin each bin reads
+  // An empty bin (next to a wall, or where the flow left a gap) reads its nearest non-empty bin:
+  // the nearest from below and from above, the nearer of the two (below on a tie).
+  const long none = -1, bin_count = static_cast<long>(bins.count);
+  std::vector<long> below(bins.count, none), above(bins.count, none), source(bins.count, none);
+  for (long k = 0, last = none; k < bin_count; ++k) below[k] = last = count[k] > 0 ? k : last;
+  for (long k = bin_count - 1, last = none; k >= 0; --k) above[k] = last = count[k] > 0 ? k : last;
+  for (long k = 0; k < bin_count; ++k)
+    source[k] = above[k] == none || (below[k] != none && k - below[k] <= above[k] - k) ? below[k] : above[k];
   for (std::size_t k = 0; k < bins.count; ++k)
     if (count[k] > 0) {
       m.vel[k] /= count[k];
       m.p[k] /= count[k];
       m.depth[k] /= count[k];
-      source[k] = k;
     }
-  for (std::size_t k = 1; k < bins.count; ++k)  // nearest from below, then from above if nearer
-    if (source[k] == bins.count) source[k] = source[k - 1];
-  for (std::size_t k = bins.count - 1; k-- > 0;)
-    if (count[k] == 0 && source[k + 1] < bins.count &&
-        (source[k] == bins.count || source[k + 1] - k < k - source[k]))
-      source[k] = source[k + 1];
   BandMeans filled = m;
   for (std::size_t k = 0; k < bins.count; ++k)
-    if (source[k] < bins.count) {
+    if (source[k] != none) {
       filled.vel[k] = m.vel[source[k]];
       filled.p[k] = m.p[source[k]];
       filled.depth[k] = m.depth[source[k]];
@@ -98,10 +98,10 @@ void relax_mean_normal_velocity(OpenBoundary& b, const BandMeans& means, Real dt
 }
 
 // Fills the space the flow opened at the buffer's far end: in each bin along the plane where the
-// buffer moves towards the plane, new
-// particles behind the outermost one (copies of it), at the spacing along the normal at which
-// particles of mass m have the buffer's density: dx = m / (rho dp). A lattice of spacing dp would
-// stand for rho0 in the density summation, not for the buffer's pressure.
+// buffer moves towards the plane, new particles behind the outermost one (copies of it), at the
+// spacing along the normal at which particles of mass m have the buffer's density:
+// dx = m / (rho dp). A lattice of spacing dp would stand for rho0 in the density summation, not for
+// the buffer's pressure.
 void refill_buffer(FluidBody& fluid, OpenBoundary& b, std::size_t k, const std::vector<bool>& removed) {
   FluidParticles& f = fluid.particles;
   const PlaneBins bins(b, fluid.dp);
@@ -181,18 +181,17 @@ void impose_buffer_states(FluidBody& fluid, std::vector<OpenBoundary>& boundarie
     const bool reflecting = b.condition == OpenBoundaryCondition::Velocity || b.reflection_time <= 0.0;
     if (!reflecting) relax_mean_normal_velocity(b, means, dt);
     // Pressure condition: the pressure at the plane in each bin, p_b or, weakly reflecting,
-    // p_b + rho0 c (u_n - ubar_n).
-    RealArray plane_p(bins.count, 0.0);
+    // p_b + rho0 c (u_n - ubar_n); the slope of the continuation goes through their mean.
+    RealArray plane_p;
+    Real slope = means.slope();
     if (b.condition == OpenBoundaryCondition::Pressure) {
       const Real p_b = b.pressure(t);
-      for (std::size_t bin = 0; bin < bins.count; ++bin)
-        plane_p[bin] = reflecting ? p_b
-                                  : p_b + eos.impedance() * (means.vel[bin].dot(b.normal()) - b.mean_normal_velocity[bin]);
+      plane_p.assign(bins.count, p_b);
+      if (!reflecting)
+        for (std::size_t bin = 0; bin < bins.count; ++bin)
+          plane_p[bin] += eos.impedance() * (means.vel[bin].dot(b.normal()) - b.mean_normal_velocity[bin]);
+      slope = means.slope_through(std::accumulate(plane_p.begin(), plane_p.end(), 0.0) / static_cast<Real>(bins.count));
     }
-    // Pressure continued linearly into the buffer: a constant buffer pressure would put a kink at
-    // the plane that the kernel smears, moving the prescribed value half a support outwards.
-    const Real mean_plane_p = std::accumulate(plane_p.begin(), plane_p.end(), 0.0) / static_cast<Real>(bins.count);
-    const Real slope = b.condition == OpenBoundaryCondition::Pressure ? means.slope_through(mean_plane_p) : means.slope();
     const std::uint8_t zone = zone_of(k);
     parallel_for_each(f.size(), [&](std::size_t i) {
       if (f.zone[i] != zone) return;

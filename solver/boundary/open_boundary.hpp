@@ -13,8 +13,11 @@
 //                       velocity u_n extrapolated, no tangential velocity (the flow crosses the
 //                       plane normally: buffer particles, which feel no wall, cannot drift into one)
 //   both                rho = EOS^-1(p), vol = m / rho
-// Extrapolation is zero normal gradient: the mean over the domain's particles within one kernel
-// support of the plane, in bins of width dp along the plane (a channel's profile u(y) is kept).
+// Extrapolation from the domain's particles within one kernel support of the plane (the band), in
+// bins of width dp along the plane (a channel's profile u(y) is kept): the velocity with zero normal
+// gradient (the bin's mean); the pressure continued linearly, with the slope of a least-squares line
+// of p against depth over the band (through (0, p_b) for the pressure condition), since a constant
+// buffer pressure would put a kink at the plane that the kernel smears half a support outwards.
 //
 // Exchange, once per advection step (particles move < dp / 2 in one; works both ways):
 //   a buffer particle now in the domain   joins the domain
@@ -31,7 +34,6 @@
 #include "fluid/fluid_body.hpp"
 
 #include <functional>
-#include <optional>
 #include <string>
 #include <vector>
 

@@ -7,7 +7,6 @@
 
 #include <cmath>
 #include <string>
-#include <utility>
 
 namespace mrsph {
 
