@@ -6,6 +6,7 @@
 #include "simulation/checkpoint.hpp"
 #include "simulation/run_summary.hpp"
 #include "simulation/runner.hpp"
+#include "solid/solid_dynamics.hpp"
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -62,6 +63,12 @@ void print_scene(const mrsph::LoadedScene& scene) {
     fmt::print("solid      {:<12} {:>8} particles  dp {:g}  h {:g}  {}  E {:g}  nu {:g}  c_S {:g}  clamped {}\n", s.name,
                s.particles.size(), s.dp, s.h(), mrsph::solid_model_name(s.material.model()), s.material.youngs_modulus(),
                s.material.poisson_ratio(), s.material.sound_speed(), clamped);
+    const mrsph::Real step = mrsph::solid_time_step(s);
+    fmt::print("           step {:.4g} (the criterion's 0.6 h / c_S times {:.3f} for its gradient weights)", step,
+               s.weights.time_step_scale);
+    if (s.weights.highest_frequency > 0.0)
+      fmt::print("; omega_max dt = {:.3f} (position Verlet is stable below 2)", s.weights.highest_frequency * step);
+    fmt::print("\n");
   }
   fmt::print("schedule   {}   end time {:g}\n", scene.schedule->name(), scene.run.end_time);
 }

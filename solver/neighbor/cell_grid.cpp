@@ -23,22 +23,6 @@ CellGrid::CellGrid(const DomainBox& box, Real search_radius) : box_(box), search
   }
 }
 
-int CellGrid::cell_coordinate(Real x, int axis) const {
-  int c = static_cast<int>(std::floor((x - origin_[axis]) / cell_size_[axis]));
-  if (box_.periodic[axis]) return std::clamp(c, 0, cells_[axis] - 1);  // x is wrapped already
-  return c;  // may lie outside [0, n): wrap_cell() skips cells that do not exist
-}
-
-bool CellGrid::wrap_cell(int& c, int axis, Real& shift) const {
-  const int n = cells_[axis];
-  if (box_.periodic[axis]) {
-    if (c < 0) { c += n; shift = -box_.length(axis); }
-    else if (c >= n) { c -= n; shift = box_.length(axis); }
-    return true;
-  }
-  return c >= 0 && c < n;
-}
-
 void CellGrid::build(const Vec2Array& positions) {
   const std::size_t n = positions.size();
   wrapped_.resize(n);

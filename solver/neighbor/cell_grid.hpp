@@ -6,7 +6,9 @@
 #include "core/types.hpp"
 #include "neighbor/domain_box.hpp"
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <vector>
 
 namespace mrsph {
@@ -22,24 +24,39 @@ class CellGrid {
   const DomainBox& box() const { return box_; }
   Real search_radius() const { return search_radius_; }
 
-  // Calls f(begin, end, image) for each cell neighbouring the cell of `query` (a wrapped position):
-  // the particles of that cell are sorted_index(k) and sorted_position(k) for k in [begin, end), and
-  // `image` is the periodic shift to add to their positions.
+  // Calls f(begin, end, image) for the cells neighbouring the cell of `query` (a wrapped
+  // position), row by row and from left to right: the particles are sorted_index(k) and
+  // sorted_position(k) for k in [begin, end), and `image` is the periodic shift to add to their
+  // positions. Neighbouring cells of one row with one image are contiguous in the sorted order, so
+  // they come as one range (at most three ranges per row where the row wraps, one otherwise).
   template <class F>
-  void for_each_cell_near(const Vec2& query, F&& f) const {
-    std::array<int, 2> c;
-    for (int a = 0; a < 2; ++a) c[a] = cell_coordinate(query[a], a);
+  void for_each_run_near(const Vec2& query, F&& f) const {
+    const int n = cells_[0];
+    const int cx = cell_coordinate(query[0], 0), cy = cell_coordinate(query[1], 1);
+    auto emit = [&](Index begin, Index end, Real shift_x, Real shift_y) {
+      if (begin != end) f(begin, end, Vec2(shift_x, shift_y));
+    };
     for (int dy = -1; dy <= 1; ++dy) {
-      int cy = c[1] + dy;
+      int row = cy + dy;
       Real shift_y = 0.0;
-      if (!wrap_cell(cy, 1, shift_y)) continue;
-      for (int dx = -1; dx <= 1; ++dx) {
-        int cx = c[0] + dx;
-        Real shift_x = 0.0;
-        if (!wrap_cell(cx, 0, shift_x)) continue;
-        const int cell = cy * cells_[0] + cx;
-        if (cell_start_[cell] != cell_start_[cell + 1]) f(cell_start_[cell], cell_start_[cell + 1], Vec2(shift_x, shift_y));
+      if (!wrap_cell(row, 1, shift_y)) continue;
+      const Index* start = cell_start_.data() + static_cast<std::size_t>(row) * n;  // start[n]: the row's end
+      int first = cx - 1, last = cx + 1;
+      if (!box_.periodic[0]) {
+        first = std::max(first, 0);
+        last = std::min(last, n - 1);
+        if (first <= last) emit(start[first], start[last + 1], 0.0, shift_y);
+        continue;
       }
+      const Real L = box_.length(0);
+      if (first < 0) {
+        emit(start[n - 1], start[n], -L, shift_y);
+        first = 0;
+      }
+      const bool wraps_right = last >= n;
+      if (wraps_right) last = n - 1;
+      emit(start[first], start[last + 1], 0.0, shift_y);
+      if (wraps_right) emit(start[0], start[1], L, shift_y);
     }
   }
   // False if no cell within one cell of the query's holds particles' grid extent: the query point is
@@ -56,8 +73,20 @@ class CellGrid {
   const Vec2& sorted_position(Index k) const { return sorted_pos_[k]; }
 
  private:
-  int cell_coordinate(Real x, int axis) const;
-  bool wrap_cell(int& c, int axis, Real& shift) const;
+  int cell_coordinate(Real x, int axis) const {
+    const int c = static_cast<int>(std::floor((x - origin_[axis]) / cell_size_[axis]));
+    if (box_.periodic[axis]) return std::clamp(c, 0, cells_[axis] - 1);  // x is wrapped already
+    return c;  // may lie outside [0, n): wrap_cell() skips cells that do not exist
+  }
+  bool wrap_cell(int& c, int axis, Real& shift) const {
+    const int n = cells_[axis];
+    if (box_.periodic[axis]) {
+      if (c < 0) { c += n; shift = -box_.length(axis); }
+      else if (c >= n) { c -= n; shift = box_.length(axis); }
+      return true;
+    }
+    return c >= 0 && c < n;
+  }
 
   DomainBox box_;
   Real search_radius_;

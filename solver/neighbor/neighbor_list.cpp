@@ -13,28 +13,31 @@ void NeighborList::build(const Vec2Array& queries, const CellGrid& target, const
   const Real cutoff2 = kernel.cutoff() * kernel.cutoff();
   const DomainBox& box = target.box();
 
-  // Fixed chunks, each filled by one task, then concatenated in order: one search pass and a
-  // result independent of the thread count. The order of a particle's neighbours follows the cell
-  // layout of the target, which depends only on the positions.
+  // Fixed chunks of queries, each searched by one task into its own list of accepted pairs; then
+  // the offsets, and each chunk's pairs get their kernel values as they are written to their
+  // place. The result is independent of the thread count. The order of a particle's neighbours
+  // follows the cell layout of the target, which depends only on the positions.
   constexpr std::size_t kChunk = 256;
   const std::size_t chunks = (n + kChunk - 1) / kChunk;
-  if (chunk_entries_.size() < chunks) chunk_entries_.resize(chunks);
+  if (chunk_pairs_.size() < chunks) chunk_pairs_.resize(chunks);
   std::vector<Index> counts(n, 0);
+  std::vector<std::size_t> chunk_used(chunks, 0);
 
   tbb::parallel_for(std::size_t(0), chunks, [&](std::size_t c) {
-    std::vector<Neighbor>& out = chunk_entries_[c];
-    out.clear();
+    // `out` only grows (its elements past `used` are scratch), so it is sized once per build.
+    std::vector<AcceptedPair>& out = chunk_pairs_[c];
+    std::size_t used = 0;
     const std::size_t begin = c * kChunk, end = std::min(n, begin + kChunk);
     for (std::size_t i = begin; i < end; ++i) {
       const Vec2 xi = box.wrap(queries[i]);
       if (!target.within_reach(xi)) continue;  // counts[i] stays 0
-      const std::size_t before = out.size();
-      // Pass 1: a tight distance filter that only records the accepted pairs. About a third of the
-      // 3x3 cells' candidates lie within the cutoff, at random, so a branch on the test would be
-      // mispredicted often: every candidate is written and kept by advancing the end by 0 or 1.
-      target.for_each_cell_near(xi, [&](Index k_begin, Index k_end, const Vec2& image) {
-        std::size_t used = out.size();
-        out.resize(used + static_cast<std::size_t>(k_end - k_begin));
+      const std::size_t before = used;
+      // About a third of the candidates of the 3x3 cells lie within the cutoff, at random, so a
+      // branch on the test would be mispredicted often: every candidate is written and kept by
+      // advancing the end by 0 or 1.
+      target.for_each_run_near(xi, [&](Index k_begin, Index k_end, const Vec2& image) {
+        if (out.size() < used + static_cast<std::size_t>(k_end - k_begin))
+          out.resize(2 * (used + static_cast<std::size_t>(k_end - k_begin)));
         const bool skip_self = exclude_self && image.isZero();
         for (Index k = k_begin; k < k_end; ++k) {
           // (xi - xj) - image is exactly antisymmetric in floating point: pair forces cancel to the bit.
@@ -42,29 +45,29 @@ void NeighborList::build(const Vec2Array& queries, const CellGrid& target, const
           const Real r2 = d.squaredNorm();
           const Index j = target.sorted_index(k);
           const bool self = skip_self & (static_cast<std::size_t>(j) == i);
-          out[used] = Neighbor{j, r2, 0.0, 0.0, d};
+          out[used] = AcceptedPair{j, r2, d};
           used += static_cast<std::size_t>((r2 < cutoff2) & !self);
         }
-        out.resize(used);
       });
-      // Pass 2: kernel values of the accepted pairs.
-      for (std::size_t m = before; m < out.size(); ++m) {
-        Neighbor& nb = out[m];
-        const Real r = std::sqrt(nb.r);
-        nb.r = r;
-        kernel.values(r, nb.W, nb.dW);
-        // Coincident particles of different bodies: no direction; W counts, dW is zero at r = 0.
-        nb.e = r > 0.0 ? Vec2(nb.e * (1.0 / r)) : Vec2::Zero();
-      }
-      counts[i] = static_cast<Index>(out.size() - before);
+      counts[i] = static_cast<Index>(used - before);
     }
+    chunk_used[c] = used;
   });
 
   offsets_.assign(n + 1, 0);
   for (std::size_t i = 0; i < n; ++i) offsets_[i + 1] = offsets_[i] + counts[i];
   entries_.resize(offsets_[n]);
   tbb::parallel_for(std::size_t(0), chunks, [&](std::size_t c) {
-    std::copy(chunk_entries_[c].begin(), chunk_entries_[c].end(), entries_.begin() + offsets_[c * kChunk]);
+    Neighbor* to = entries_.data() + offsets_[c * kChunk];
+    for (std::size_t m = 0; m < chunk_used[c]; ++m) {
+      const AcceptedPair& pair = chunk_pairs_[c][m];
+      Neighbor& nb = *to++;
+      nb.j = pair.j;
+      nb.r = std::sqrt(pair.r2);
+      kernel.values(nb.r, nb.W, nb.dW);
+      // Coincident particles of different bodies: no direction; W counts, dW is zero at r = 0.
+      nb.e = nb.r > 0.0 ? Vec2(pair.d * (1.0 / nb.r)) : Vec2::Zero();
+    }
   });
 }
 

@@ -38,9 +38,15 @@ class NeighborList {
   void build(const Vec2Array& queries, const CellGrid& target, const WendlandC2& kernel, bool exclude_self);
 
  private:
+  // A pair accepted by the search, before its kernel values: j, |r_i - r_j|^2 and r_i - r_j.
+  struct AcceptedPair {
+    Index j;
+    Real r2;
+    Vec2 d;
+  };
   std::vector<Index> offsets_;
   std::vector<Neighbor> entries_;
-  std::vector<std::vector<Neighbor>> chunk_entries_;  // reused between builds: no reallocation
+  std::vector<std::vector<AcceptedPair>> chunk_pairs_;  // reused between builds: no reallocation
 };
 
 // For a contact list query -> target, the entries of each target particle: target particle a owns

@@ -44,6 +44,9 @@ struct GradientWeights {
   // step criterion (Eq. 34, factor 0.6) is calibrated for B0; multiplied by this ratio it keeps the
   // same stability margin for other weights (1 for the paper's weights). Set by initialise_solid.
   Real time_step_scale = 1.0;
+  // omega_max of the weights in use (0 where not computed: the paper's weights). Reported by
+  // `mrsph check` with omega_max dt_S: position Verlet is stable for omega_max dt_S < 2.
+  Real highest_frequency = 0.0;
 };
 
 // Highest eigenfrequency squared of the linearised operator u -> f(u)/m (plane-strain linear

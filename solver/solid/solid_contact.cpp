@@ -33,7 +33,7 @@ void refresh_contact_candidates(SolidContact& contact, const SolidBody& a, const
   const Vec2Array& pa = a.particles.pos;
   for (std::size_t i = 0; i < pa.size(); ++i) {
     if (!grid.within_reach(pa[i])) continue;
-    grid.for_each_cell_near(pa[i], [&](Index begin, Index end, const Vec2&) {
+    grid.for_each_run_near(pa[i], [&](Index begin, Index end, const Vec2&) {
       for (Index k = begin; k < end; ++k)
         if ((pa[i] - grid.sorted_position(k)).squaredNorm() < radius * radius)
           contact.candidates.emplace_back(static_cast<Index>(i), grid.sorted_index(k));

@@ -54,6 +54,7 @@ void initialise_solid(SolidBody& solid) {
                                                        solid.weights.w_sum, s.vol0, s.mass, s.constrained, m.lambda(),
                                                        m.shear_modulus());
     if (omega2_used > omega2_paper && omega2_paper > 0.0) solid.weights.time_step_scale = std::sqrt(omega2_paper / omega2_used);
+    solid.weights.highest_frequency = std::sqrt(omega2_used);
   }
   parallel_for_each(s.size(), [&](std::size_t a) {
     s.B[a] = solid.weights.B[a];
