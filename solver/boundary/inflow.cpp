@@ -23,9 +23,12 @@ Vec2 inflow_velocity(const InflowProfile& profile, const Vec2& p, Real t) {
 }
 
 void InflowBuffer::apply(FluidParticles& fluid, Real t, const DomainBox& box) const {
+  // The region lies within its bounding box: most particles are ruled out without the region test.
+  const BoundingBox bounds = region->bounds();
   parallel_for_each(fluid.size(), [&](std::size_t i) {
     const Vec2 p = box.wrap(fluid.pos[i]);
-    if (region->contains(p)) fluid.vel[i] = inflow_velocity(profile, p, t);
+    const bool near = (p.array() >= bounds.lower.array()).all() && (p.array() <= bounds.upper.array()).all();
+    if (near && region->contains(p)) fluid.vel[i] = inflow_velocity(profile, p, t);
   }, kGrainSimpleLoop);
 }
 

@@ -17,18 +17,23 @@ void advance_density_and_position(FluidBody& fluid, Real dt_density, Real dt_pos
   }, kGrainSimpleLoop);
 }
 
+namespace {
+
+// v_i += dt ((f^p + f^d + F^prior) / m + g); an open boundary's buffer keeps its imposed velocity.
+void kick_particle(FluidParticles& f, std::size_t i, Real dt, const Vec2& body_acceleration) {
+  if (!f.in_domain(i)) return;
+  f.vel[i] += dt * ((f.pressure_force[i] + f.dissipation_force[i] + f.force_prior[i]) / f.mass[i] + body_acceleration);
+}
+
+}  // namespace
+
 void advance_position(FluidBody& fluid, Real dt) {
   FluidParticles& f = fluid.particles;
   parallel_for_each(f.size(), [&](std::size_t i) { f.pos[i] += dt * f.vel[i]; }, kGrainSimpleLoop);
 }
 
-void advance_density(FluidBody& fluid, Real dt) {
-  FluidParticles& f = fluid.particles;
-  parallel_for_each(f.size(), [&](std::size_t i) { f.rho[i] += dt * f.drho_dt[i]; }, kGrainSimpleLoop);
-}
-
 void compute_pressure_interaction(FluidBody& fluid, const NeighborList& inner, std::vector<FluidContact>& contacts,
-                                  const Vec2& body_acceleration) {
+                                  const Vec2& body_acceleration, Real kick_dt) {
   FluidParticles& f = fluid.particles;
   const RiemannDissipation& riemann = fluid.riemann;
   for (FluidContact& c : contacts) c.pair_pressure_force.resize(c.pairs.pair_count());
@@ -62,25 +67,26 @@ void compute_pressure_interaction(FluidBody& fluid, const NeighborList& inner, s
     }
     f.pressure_force[i] = force;
     f.drho_dt[i] = rho_i * drho;
+    // No particle reads another's velocity here: the kick can follow particle by particle.
+    if (kick_dt != 0.0) kick_particle(f, i, kick_dt, body_acceleration);
   });
 }
 
 void kick(FluidBody& fluid, Real dt, const Vec2& body_acceleration) {
   FluidParticles& f = fluid.particles;
-  parallel_for_each(f.size(), [&](std::size_t i) {
-    if (!f.in_domain(i)) return;  // an open boundary's buffer: the velocity is imposed
-    f.vel[i] += dt * ((f.pressure_force[i] + f.dissipation_force[i] + f.force_prior[i]) / f.mass[i] + body_acceleration);
-  }, kGrainSimpleLoop);
+  parallel_for_each(f.size(), [&](std::size_t i) { kick_particle(f, i, dt, body_acceleration); }, kGrainSimpleLoop);
 }
 
 void add_velocity_divergence_and_dissipation(FluidBody& fluid, const NeighborList& inner,
-                                             std::vector<FluidContact>& contacts) {
+                                             std::vector<FluidContact>& contacts, Real position_dt, Real density_dt) {
   FluidParticles& f = fluid.particles;
   const RiemannDissipation& riemann = fluid.riemann;
   for (FluidContact& c : contacts)
     c.pair_dissipation_force.assign(riemann.momentum ? c.pairs.pair_count() : 0, Vec2::Zero());
 
   parallel_for_each(f.size(), [&](std::size_t i) {
+    // No particle reads another's position or density here: both updates follow particle by particle.
+    if (position_dt != 0.0) f.pos[i] += position_dt * f.vel[i];
     const Vec2 v_i = f.vel[i];
     const Real vol_i = f.vol[i];
     Real divergence = 0.0;
@@ -111,6 +117,7 @@ void add_velocity_divergence_and_dissipation(FluidBody& fluid, const NeighborLis
     }
     f.drho_dt[i] += f.rho[i] * divergence;
     f.dissipation_force[i] = dissipation;
+    if (density_dt != 0.0) f.rho[i] += density_dt * f.drho_dt[i];
   });
 
   for (FluidContact& c : contacts) {
@@ -122,14 +129,11 @@ void add_velocity_divergence_and_dissipation(FluidBody& fluid, const NeighborLis
 void acoustic_first_half(FluidBody& fluid, const NeighborList& inner, std::vector<FluidContact>& contacts, Real dt,
                          const Vec2& body_acceleration) {
   advance_density_and_position(fluid, 0.5 * dt, 0.5 * dt);
-  compute_pressure_interaction(fluid, inner, contacts, body_acceleration);
-  kick(fluid, dt, body_acceleration);
+  compute_pressure_interaction(fluid, inner, contacts, body_acceleration, dt);
 }
 
 void acoustic_second_half(FluidBody& fluid, const NeighborList& inner, std::vector<FluidContact>& contacts, Real dt) {
-  advance_position(fluid, 0.5 * dt);
-  add_velocity_divergence_and_dissipation(fluid, inner, contacts);
-  advance_density(fluid, 0.5 * dt);
+  add_velocity_divergence_and_dissipation(fluid, inner, contacts, 0.5 * dt, 0.5 * dt);
 }
 
 void accumulate_boundary_reaction(const FluidContact& contact, const Vec2Array& pair_force, Vec2Array& reaction) {

@@ -31,16 +31,17 @@ void acoustic_second_half(FluidBody& fluid, const NeighborList& inner, std::vect
 void advance_density_and_position(FluidBody& fluid, Real dt_density, Real dt_position);
 // r += dt v.
 void advance_position(FluidBody& fluid, Real dt);
-// f^p (with every boundary pair force stored) and drho/dt = the Riemann pressure-difference term.
+// f^p (with every boundary pair force stored) and drho/dt = the Riemann pressure-difference term;
+// with kick_dt != 0, then the kick below with kick_dt, in the same pass.
 void compute_pressure_interaction(FluidBody& fluid, const NeighborList& inner, std::vector<FluidContact>& contacts,
-                                  const Vec2& body_acceleration);
+                                  const Vec2& body_acceleration, Real kick_dt = 0.0);
 // v += dt ((f^p + f^d + F^prior) / m + g).
 void kick(FluidBody& fluid, Real dt, const Vec2& body_acceleration);
-// drho/dt += rho div v terms; f^d (and its boundary reactions) from the current velocities.
+// drho/dt += rho div v terms; f^d (and its boundary reactions) from the current velocities. In the
+// same pass, where non-zero: r += position_dt v before, rho += density_dt drho/dt after.
 void add_velocity_divergence_and_dissipation(FluidBody& fluid, const NeighborList& inner,
-                                             std::vector<FluidContact>& contacts);
-// rho += dt drho/dt (volumes are refreshed when the pressure is next evaluated).
-void advance_density(FluidBody& fluid, Real dt);
+                                             std::vector<FluidContact>& contacts, Real position_dt = 0.0,
+                                             Real density_dt = 0.0);
 
 // Sum over the pairs of each boundary particle of -pair_force: the reaction of the fluid on the
 // boundary, exactly opposite to what the fluid received (pair by pair).
