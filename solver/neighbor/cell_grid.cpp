@@ -58,8 +58,12 @@ void CellGrid::build(const Vec2Array& positions) {
   sorted_.resize(n);
   std::vector<Index> fill(cell_start_.begin(), cell_start_.end() - 1);
   for (std::size_t i = 0; i < n; ++i) sorted_[fill[cell_of[i]]++] = static_cast<Index>(i);
-  sorted_pos_.resize(n);
-  for (std::size_t k = 0; k < n; ++k) sorted_pos_[k] = wrapped_[sorted_[k]];
+  sorted_x_.resize(n);
+  sorted_y_.resize(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    sorted_x_[k] = wrapped_[sorted_[k]].x();
+    sorted_y_[k] = wrapped_[sorted_[k]].y();
+  }
 }
 
 }  // namespace mrsph

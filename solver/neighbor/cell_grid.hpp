@@ -70,7 +70,10 @@ class CellGrid {
     return true;
   }
   Index sorted_index(Index k) const { return sorted_[k]; }
-  const Vec2& sorted_position(Index k) const { return sorted_pos_[k]; }
+  Vec2 sorted_position(Index k) const { return Vec2(sorted_x_[k], sorted_y_[k]); }
+  // The same coordinates as separate arrays, for loops over a range that the compiler vectorises.
+  const Real* sorted_x() const { return sorted_x_.data(); }
+  const Real* sorted_y() const { return sorted_y_.data(); }
 
  private:
   int cell_coordinate(Real x, int axis) const {
@@ -96,7 +99,7 @@ class CellGrid {
   Vec2Array wrapped_;
   std::vector<Index> cell_start_;
   std::vector<Index> sorted_;
-  Vec2Array sorted_pos_;  // wrapped positions in cell order, contiguous per cell
+  RealArray sorted_x_, sorted_y_;  // wrapped positions in cell order, contiguous per cell
 };
 
 }  // namespace mrsph
