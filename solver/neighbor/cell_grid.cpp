@@ -48,11 +48,14 @@ void CellGrid::build(const Vec2Array& positions) {
   const std::size_t ncell = static_cast<std::size_t>(cells_[0]) * cells_[1];
   std::vector<Index> cell_of(n);
   cell_start_.assign(ncell + 1, 0);
+  occupied_ = {{{cells_[0], -1}, {cells_[1], -1}}};  // empty: no query is within reach
   for (std::size_t i = 0; i < n; ++i) {
     const int cx = std::clamp(cell_coordinate(wrapped_[i][0], 0), 0, cells_[0] - 1);
     const int cy = std::clamp(cell_coordinate(wrapped_[i][1], 1), 0, cells_[1] - 1);
     cell_of[i] = cy * cells_[0] + cx;
     ++cell_start_[cell_of[i] + 1];
+    occupied_[0] = {std::min(occupied_[0][0], cx), std::max(occupied_[0][1], cx)};
+    occupied_[1] = {std::min(occupied_[1][0], cy), std::max(occupied_[1][1], cy)};
   }
   for (std::size_t c = 0; c < ncell; ++c) cell_start_[c + 1] += cell_start_[c];
   sorted_.resize(n);

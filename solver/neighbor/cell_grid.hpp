@@ -59,13 +59,21 @@ class CellGrid {
       if (wraps_right) emit(start[0], start[1], L, shift_y);
     }
   }
-  // False if no cell within one cell of the query's holds particles' grid extent: the query point is
-  // out of reach of every particle (a cheap test before the 3x3 stencil).
+  // False if, along some axis, the query's cell is more than one cell away from the cells that hold
+  // particles: no particle is within reach (a cheap test before the 3x3 stencil). Along a periodic
+  // axis the grid spans the whole period, and a compact body away from the seam fills a few cells.
   bool within_reach(const Vec2& query) const {
     for (int a = 0; a < 2; ++a) {
-      if (box_.periodic[a]) continue;
       const int c = cell_coordinate(query[a], a);
-      if (c < -1 || c > cells_[a]) return false;
+      if (!box_.periodic[a]) {
+        if (c < -1 || c > cells_[a]) return false;
+        continue;
+      }
+      const int n = cells_[a];
+      bool near = false;
+      for (const int image : {c - n, c, c + n})
+        near = near || (image >= occupied_[a][0] - 1 && image <= occupied_[a][1] + 1);
+      if (!near) return false;
     }
     return true;
   }
@@ -100,6 +108,7 @@ class CellGrid {
   std::vector<Index> cell_start_;
   std::vector<Index> sorted_;
   RealArray sorted_x_, sorted_y_;  // wrapped positions in cell order, contiguous per cell
+  std::array<std::array<int, 2>, 2> occupied_{};  // per axis: the lowest and highest cell holding particles
 };
 
 }  // namespace mrsph
