@@ -8,6 +8,52 @@
 
 namespace mrsph {
 
+namespace {
+
+using AcceptedPair = NeighborList::AcceptedPair;
+
+// A search task's scratch: the squared distances of one range of candidates, and the offsets of
+// those within the cutoff.
+struct RangeScratch {
+  std::vector<Real> r2;
+  std::vector<std::uint32_t> kept;
+};
+
+// Writes to out[used...] the pairs of query i (at xi) with the target particles k in
+// [k_begin, k_end), shifted by `image`, that lie within the cutoff (not i itself where the query set
+// is the target set); returns the new end. Distances of the whole range first (a loop the compiler
+// vectorises), then the offsets within the cutoff: about a third, at random, so they are kept by
+// advancing the end by 0 or 1 instead of a branch that would be mispredicted often.
+// (xi - xj) - image is exactly antisymmetric in floating point: pair forces cancel to the bit.
+std::size_t append_pairs_in_range(const CellGrid& target, Index k_begin, Index k_end, const Vec2& image,
+                                  const Vec2& xi, std::size_t i, bool skip_self, Real cutoff2,
+                                  RangeScratch& scratch, std::vector<AcceptedPair>& out, std::size_t used) {
+  const std::size_t length = static_cast<std::size_t>(k_end - k_begin);
+  if (scratch.r2.size() < length) scratch.r2.resize(length), scratch.kept.resize(length);
+  if (out.size() < used + length) out.resize(2 * (used + length));  // only grows: sized once per build
+  const Real* x = target.sorted_x() + k_begin;
+  const Real* y = target.sorted_y() + k_begin;
+  Real* r2 = scratch.r2.data();
+  for (std::size_t m = 0; m < length; ++m) {
+    const Real dx = (xi.x() - x[m]) - image.x(), dy = (xi.y() - y[m]) - image.y();
+    r2[m] = dx * dx + dy * dy;
+  }
+  std::size_t count = 0;
+  for (std::size_t m = 0; m < length; ++m) {
+    scratch.kept[count] = static_cast<std::uint32_t>(m);
+    count += static_cast<std::size_t>(r2[m] < cutoff2);
+  }
+  for (std::size_t a = 0; a < count; ++a) {
+    const std::size_t m = scratch.kept[a];
+    const Index j = target.sorted_index(k_begin + static_cast<Index>(m));
+    if (skip_self && static_cast<std::size_t>(j) == i) continue;
+    out[used++] = AcceptedPair{j, r2[m], Vec2((xi.x() - x[m]) - image.x(), (xi.y() - y[m]) - image.y())};
+  }
+  return used;
+}
+
+}  // namespace
+
 void NeighborList::build(const Vec2Array& queries, const CellGrid& target, const WendlandC2& kernel,
                          bool exclude_self) {
   const std::size_t n = queries.size();
@@ -25,44 +71,16 @@ void NeighborList::build(const Vec2Array& queries, const CellGrid& target, const
   std::vector<std::size_t> chunk_used(chunks, 0);
 
   tbb::parallel_for(std::size_t(0), chunks, [&](std::size_t c) {
-    // `out` only grows (its elements past `used` are scratch), so it is sized once per build.
-    std::vector<AcceptedPair>& out = chunk_pairs_[c];
+    RangeScratch scratch;
     std::size_t used = 0;
-    std::vector<Real> r2;            // squared distances of one range of candidates
-    std::vector<std::uint32_t> kept;  // offsets of those within the cutoff
-    const Real* X = target.sorted_x();
-    const Real* Y = target.sorted_y();
     const std::size_t begin = c * kChunk, end = std::min(n, begin + kChunk);
     for (std::size_t i = begin; i < end; ++i) {
       const Vec2 xi = box.wrap(queries[i]);
       if (!target.within_reach(xi)) continue;  // counts[i] stays 0
       const std::size_t before = used;
       target.for_each_run_near(xi, [&](Index k_begin, Index k_end, const Vec2& image) {
-        const std::size_t length = static_cast<std::size_t>(k_end - k_begin);
-        if (r2.size() < length) r2.resize(length), kept.resize(length);
-        if (out.size() < used + length) out.resize(2 * (used + length));
-        // Distances of the whole range first (a loop the compiler vectorises), then the offsets of
-        // those within the cutoff: about a third, at random, so they are kept by advancing the end
-        // by 0 or 1 instead of a branch that would be mispredicted often. (xi - xj) - image is
-        // exactly antisymmetric in floating point: pair forces cancel to the bit.
-        const Real* x = X + k_begin;
-        const Real* y = Y + k_begin;
-        for (std::size_t m = 0; m < length; ++m) {
-          const Real dx = (xi.x() - x[m]) - image.x(), dy = (xi.y() - y[m]) - image.y();
-          r2[m] = dx * dx + dy * dy;
-        }
-        std::size_t count = 0;
-        for (std::size_t m = 0; m < length; ++m) {
-          kept[count] = static_cast<std::uint32_t>(m);
-          count += static_cast<std::size_t>(r2[m] < cutoff2);
-        }
-        const bool skip_self = exclude_self && image.isZero();
-        for (std::size_t a = 0; a < count; ++a) {
-          const std::size_t m = kept[a];
-          const Index j = target.sorted_index(k_begin + static_cast<Index>(m));
-          if (skip_self && static_cast<std::size_t>(j) == i) continue;
-          out[used++] = AcceptedPair{j, r2[m], Vec2((xi.x() - x[m]) - image.x(), (xi.y() - y[m]) - image.y())};
-        }
+        used = append_pairs_in_range(target, k_begin, k_end, image, xi, i, exclude_self && image.isZero(), cutoff2,
+                                     scratch, chunk_pairs_[c], used);
       });
       counts[i] = static_cast<Index>(used - before);
     }

@@ -37,13 +37,14 @@ class NeighborList {
   // (its periodic images are kept).
   void build(const Vec2Array& queries, const CellGrid& target, const WendlandC2& kernel, bool exclude_self);
 
- private:
   // A pair accepted by the search, before its kernel values: j, |r_i - r_j|^2 and r_i - r_j.
   struct AcceptedPair {
     Index j;
     Real r2;
     Vec2 d;
   };
+
+ private:
   std::vector<Index> offsets_;
   std::vector<Neighbor> entries_;
   std::vector<std::vector<AcceptedPair>> chunk_pairs_;  // reused between builds: no reallocation
