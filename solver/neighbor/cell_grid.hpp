@@ -85,7 +85,10 @@ class CellGrid {
 
  private:
   int cell_coordinate(Real x, int axis) const {
-    const int c = static_cast<int>(std::floor((x - origin_[axis]) / cell_size_[axis]));
+    // floor() without the library call it is on the baseline x86-64 target; the same integer.
+    const Real v = (x - origin_[axis]) / cell_size_[axis];
+    int c = static_cast<int>(v);
+    c -= static_cast<int>(static_cast<Real>(c) > v);
     if (box_.periodic[axis]) return std::clamp(c, 0, cells_[axis] - 1);  // x is wrapped already
     return c;  // may lie outside [0, n): wrap_cell() skips cells that do not exist
   }

@@ -23,8 +23,10 @@ struct DomainBox {
       if (!periodic[a]) continue;
       const Real L = length(a);
       Real x = p[a] - lower[a];
-      x -= L * std::floor(x / L);
-      if (x >= L) x -= L;  // guards against x/L rounding to exactly 1
+      if (!(x >= 0.0 && x < L)) {  // inside, floor(x / L) = 0 and x is kept: the call is skipped
+        x -= L * std::floor(x / L);
+        if (x >= L) x -= L;  // guards against x/L rounding to exactly 1
+      }
       p[a] = lower[a] + x;
     }
     return p;
