@@ -1,6 +1,8 @@
 #include "geometry/particle_generator.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace mrsph {
 
@@ -37,22 +39,74 @@ GeneratedParticles fill_lattice(const Shape& region, Real dp, const FillSpec& fi
   return out;
 }
 
+// The angular intervals [begin, end] (begin < end, possibly past 2 pi) where the ring of radius r
+// lies inside the region; empty when the whole ring does. Crossings are sampled at a fraction of a
+// spacing and refined by bisection.
+struct Arc {
+  Real begin, end;
+};
+
+std::vector<Arc> arcs_inside(const Shape& region, const Vec2& center, Real r, Real dp) {
+  const auto inside = [&](Real angle) { return region.contains(center + r * Vec2(std::cos(angle), std::sin(angle))); };
+  const int samples = std::max(64, 16 * static_cast<int>(std::ceil(2.0 * kPi * r / dp)));
+  const Real step = 2.0 * kPi / samples;
+  int start = 0;  // a sample outside the region, so that no arc wraps past the start
+  while (start < samples && inside(start * step)) ++start;
+  if (start == samples) return {};
+  const auto crossing = [&](Real a, Real b) {  // inside(a) != inside(b)
+    const bool at_a = inside(a);
+    for (int i = 0; i < 60; ++i) {
+      const Real mid = 0.5 * (a + b);
+      (inside(mid) == at_a ? a : b) = mid;
+    }
+    return 0.5 * (a + b);
+  };
+  std::vector<Arc> arcs;
+  bool was_inside = false;
+  for (int m = start + 1; m <= start + samples; ++m) {
+    const bool now_inside = inside(m * step);
+    if (now_inside == was_inside) continue;
+    const Real angle = crossing((m - 1) * step, m * step);
+    if (now_inside)
+      arcs.push_back({angle, angle});
+    else
+      arcs.back().end = angle;
+    was_inside = now_inside;
+  }
+  return arcs;
+}
+
 GeneratedParticles fill_rings(const Shape& region, Real dp, const FillSpec& fill) {
   const Real R = fill.ring_radius;
   const int rings = std::max(1, static_cast<int>(std::lround(R / dp)));
   const Real dr = R / rings;
   GeneratedParticles out;
+  const auto add = [&](const Vec2& p, Real volume) {
+    out.pos.push_back(p);
+    out.vol.push_back(volume);
+  };
   for (int k = rings - 1; k >= 0; --k) {
     const Real r = (k + 0.5) * dr;
-    const int n = std::max(1, static_cast<int>(std::lround(2.0 * kPi * r / dp)));
-    const Real volume = 2.0 * kPi * r * dr / n;
-    const Real offset = (k % 2) * kPi / n;  // stagger successive rings
-    for (int m = 0; m < n; ++m) {
-      const Real angle = offset + 2.0 * kPi * m / n;
-      const Vec2 p = fill.ring_center + r * Vec2(std::cos(angle), std::sin(angle));
-      if (!keep(region, p, fill.clearance * dr)) continue;
-      out.pos.push_back(p);
-      out.vol.push_back(volume);
+    const std::vector<Arc> arcs = arcs_inside(region, fill.ring_center, r, dp);
+    if (arcs.empty()) {  // a whole ring, staggered against its neighbours
+      const int n = std::max(1, static_cast<int>(std::lround(2.0 * kPi * r / dp)));
+      const Real offset = (k % 2) * kPi / n;
+      for (int m = 0; m < n; ++m) {
+        const Real angle = offset + 2.0 * kPi * m / n;
+        const Vec2 p = fill.ring_center + r * Vec2(std::cos(angle), std::sin(angle));
+        if (keep(region, p, fill.clearance * dr)) add(p, 2.0 * kPi * r * dr / n);
+      }
+      continue;
+    }
+    // A ring cut by another body's shape: each arc gets its own even spacing, its end particles half
+    // a spacing from the cut, so that no gap of more than a spacing opens beside the other body.
+    for (const Arc& arc : arcs) {
+      const Real length = r * (arc.end - arc.begin);
+      const int n = static_cast<int>(std::lround(length / dp));
+      for (int m = 0; m < n; ++m) {
+        const Real angle = arc.begin + (arc.end - arc.begin) * (m + 0.5) / n;
+        add(fill.ring_center + r * Vec2(std::cos(angle), std::sin(angle)), length * dr / n);
+      }
     }
   }
   return out;

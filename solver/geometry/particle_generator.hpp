@@ -3,8 +3,10 @@
 //            origin = the region's lower bounding corner unless given, angle 0 unless given (a
 //            rotated lattice follows an inclined body: straight rows, no staircase);
 //   rings:   concentric rings about a centre with radial spacing R / round(R / dp) and about dp
-//            along each ring: a smooth circular surface (used for the cylinder).
-// A point is kept if it lies at least `clearance` * dp inside the region's boundary, so a lattice
+//            along each ring: a smooth circular surface (used for the cylinder). A ring cut by the
+//            region's boundary (the cylinder minus the beam's root) is spaced evenly along each
+//            arc left, its end particles half a spacing along the ring from the cut;
+// Otherwise a point is kept if it lies at least `clearance` * dp inside the region's boundary, so a lattice
 // aligned with a flat boundary keeps its first row at dp/2 from it, and particles of one body
 // never crowd the surface of a shape cut out for another body.
 #pragma once
