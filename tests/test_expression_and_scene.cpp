@@ -64,6 +64,10 @@ TEST_CASE("Bad scenes give one clear error naming the key", "[scene]") {
                     Catch::Contains("'fluid.viscosity'") && Catch::Contains("expected a number"));
   CHECK_THROWS_WITH(scene_from(R"({"domain": {"lower": [0, 0], "upper": [1, 1]}, "end_time": 1})"),
                     Catch::Contains("neither a fluid nor a solid"));
+  CHECK_THROWS_WITH(scene_from(channel_scene(", \"delta_sph\": 0.1, \"riemann\": {\"continuity\": true}")),
+                    Catch::Contains("'fluid.riemann.continuity'") && Catch::Contains("two density diffusions"));
+  CHECK_THROWS_WITH(scene_from(channel_scene(", \"delta_sph\": 2")),
+                    Catch::Contains("'fluid.delta_sph'") && Catch::Contains("expected a coefficient in [0, 1]"));
   CHECK_THROWS_WITH(scene_from(channel_scene("", R"(, "observers": [{"name": "p", "body": "nowhere", "point": [0.5, 0.5], "quantity": "velocity"}])")),
                     Catch::Contains("no fluid or solid body named 'nowhere'"));
 }

@@ -42,11 +42,14 @@ void print_scene(const mrsph::LoadedScene& scene) {
     fmt::print("fluid      {:<12} {:>8} particles  dp {:g}  h {:g}  c {:g}  mu {:g}\n", f.name, f.particles.size(), f.dp,
                f.h(), f.material.sound_speed(), f.material.viscosity);
     const bool free_surface = f.options.density == mrsph::DensityReinitialisation::FreeSurface;
-    fmt::print("           {} fluid: pressure forces from {}; Riemann dissipation in continuity {}, in momentum {};"
-               " emptiest kernel support {:.0f} % filled\n",
+    const bool continuity = f.options.density == mrsph::DensityReinitialisation::None;
+    fmt::print("           {} fluid: density by {}; pressure forces from {}; Riemann dissipation in continuity {}, in"
+               " momentum {}; delta-SPH diffusion {}; emptiest kernel support {:.0f} % filled\n",
                free_surface ? "free-surface" : sim.open_boundaries.empty() ? "confined" : "open (inlet/outlet)",
+               continuity ? "the continuity equation" : "summation each advection step",
                f.options.pressure_reference == mrsph::PressureReference::Mean ? "the mean pressure" : "zero",
                f.riemann.continuity ? "on" : "off", f.riemann.momentum ? "on" : "off",
+               f.options.delta_sph > 0.0 ? fmt::format("delta {:g}", f.options.delta_sph) : std::string("off"),
                100.0 * mrsph::smallest_support_fraction(f, sim.fluid_inner(), sim.fluid_contacts()));
   }
   for (const auto& b : sim.open_boundaries)

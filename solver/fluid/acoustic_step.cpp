@@ -1,6 +1,7 @@
 #include "fluid/acoustic_step.hpp"
 
 #include "core/parallel.hpp"
+#include "fluid/density_diffusion.hpp"
 
 #include <algorithm>
 
@@ -38,16 +39,22 @@ void compute_pressure_interaction(FluidBody& fluid, const NeighborList& inner, s
   const RiemannDissipation& riemann = fluid.riemann;
   for (FluidContact& c : contacts) c.pair_pressure_force.resize(c.pairs.pair_count());
   const Real scale = fluid.options.pressure_lattice_correction ? 1.0 / fluid.lattice_gradient : 1.0;
+  const Real delta = fluid.options.delta_sph;
+  const Real diffusion_scale = delta * fluid.h() * fluid.material.sound_speed();
+  compute_renormalised_density_gradient(fluid, inner);
 
   parallel_for_each(f.size(), [&](std::size_t i) {
     const Real p_i = f.p[i], rho_i = f.rho[i], vol_i = f.vol[i];
     const Real p_i_relative = p_i - 2.0 * fluid.reference_pressure;  // p_i + p_j - 2 p_ref
     const Real vol_i_scaled = scale * vol_i;
     Vec2 force = Vec2::Zero();
-    Real drho = 0.0;
+    Real drho = 0.0, diffusion = 0.0;
     for (const Neighbor& n : inner.of(i)) {
       force -= (vol_i_scaled * f.vol[n.j] * (p_i_relative + f.p[n.j]) * n.dW) * n.e;
       if (riemann.continuity) drho += f.vol[n.j] * riemann.continuity_term(p_i, f.p[n.j]) * n.dW;
+      if (delta != 0.0)
+        diffusion += density_diffusion_pair(rho_i, f.rho[n.j], fluid.density_gradient[i], fluid.density_gradient[n.j],
+                                            f.vol[n.j], n);
     }
     const Vec2 acc_prior = f.force_prior[i] / f.mass[i] + body_acceleration;
     for (FluidContact& c : contacts) {
@@ -66,7 +73,7 @@ void compute_pressure_interaction(FluidBody& fluid, const NeighborList& inner, s
       }
     }
     f.pressure_force[i] = force;
-    f.drho_dt[i] = rho_i * drho;
+    f.drho_dt[i] = rho_i * drho + diffusion_scale * diffusion;
     // No particle reads another's velocity here: the kick can follow particle by particle.
     if (kick_dt != 0.0) kick_particle(f, i, kick_dt, body_acceleration);
   });

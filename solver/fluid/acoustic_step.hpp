@@ -6,6 +6,7 @@
 //                      -V_i sum_a V_a (p_i + p^d_ia) dW_ia e_ia                          (Eqs. 21, 30)
 //              p^d_ia = p_i + rho_i max(0, (a^prior_i - abar_a).(r_a - r_i))          (Adami 2012)
 //              drho/dt = rho_i sum_j V_j (p_i - p_j)/Z dW_ij + rho_i sum_a V_a (p_i - p^d_ia)/Z dW_ia
+//                        (or, with the fluid option delta_sph, the delta-SPH term D_i of density_diffusion.hpp)
 //              v^{n+1} = v^n + dt (f^p + f^d + F^prior)/m + dt g(t + dt/2)
 // Second half: r^{n+1} = r^{n+1/2} + dt/2 v^{n+1};
 //              drho/dt += rho_i sum_j V_j (v_i - v_j).e_ij dW_ij                          (Eq. 27)

@@ -45,6 +45,10 @@ void reinitialise_density(FluidBody& fluid, const NeighborList& inner, const std
   FluidParticles& f = fluid.particles;
   const Real rho0 = fluid.material.rho0();
   const bool free_surface = fluid.options.density == DensityReinitialisation::FreeSurface;
+  if (fluid.options.density == DensityReinitialisation::None) {  // the continuity equation's density stays
+    update_reference_pressure(fluid);
+    return;
+  }
   parallel_for_each(f.size(), [&](std::size_t i) {
     Real rho = summation_density(fluid, inner, contacts, i);
     if (free_surface) rho = std::max(rho, rho0);

@@ -26,6 +26,7 @@ enum class DensityReinitialisation {
   Internal,     // rho = rho_sum: confined flow (METHOD.md section 2)
   FreeSurface,  // rho = max(rho_sum, rho0): a truncated kernel near the surface must not lower rho
   Automatic,    // decided at initialisation (Simulation): FreeSurface under gravity, else Internal
+  None,         // no summation: the density is what the continuity equation integrated
 };
 
 // The pressure the pair forces are measured from (reports/pressure.md):
@@ -57,6 +58,9 @@ struct FluidOptions {
   // difference runs 2.6 % slow; a still tank's pressure is 2.6 % high). Every pair force is scaled
   // alike, so momentum stays exact.
   bool pressure_lattice_correction = false;
+  // delta of the delta-SPH density diffusion with Antuono's correction (density_diffusion.hpp),
+  // in place of the Riemann pressure-difference term; 0: off (the paper's method).
+  Real delta_sph = 0.0;
   Real advection_cfl = 0.25;            // paper Eq. 32
   Real acoustic_cfl = 0.6;              // paper Eq. 33
 };
@@ -73,6 +77,7 @@ struct FluidBody {
   Real lattice_laplacian;       // M2 for this dp and h, with the viscous regularisation 0.01 h
   Real lattice_gradient;        // M1 for this dp and h
   Real reference_pressure = 0.0;  // subtracted from p in the pair forces (PressureReference)
+  Vec2Array density_gradient;     // <grad rho>^L of the delta-SPH diffusion, each acoustic step
 
   FluidBody(std::string body_name, Real spacing, Real h_over_dp)
       : name(std::move(body_name)), dp(spacing), kernel(h_over_dp * spacing),

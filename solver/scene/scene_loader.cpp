@@ -108,8 +108,16 @@ FluidBody read_fluid(const SceneNode& node, const DomainBox& box, double& budget
   // Without viscosity nothing else damps the particle-scale motion: the momentum dissipation is on
   // unless the scene says otherwise (reports/pressure.md, still water tank).
   fluid.riemann.momentum = m.viscosity == 0.0;
+  // delta-SPH replaces the Riemann pressure-difference term of the continuity equation.
+  fluid.options.delta_sph = node.non_negative_or("delta_sph", 0.0);
+  if (fluid.options.delta_sph > 1.0)
+    node.fail("delta_sph", fmt::format("expected a coefficient in [0, 1] (0.1 is the usual value), got {:g}", fluid.options.delta_sph));
+  fluid.riemann.continuity = fluid.options.delta_sph == 0.0;
   if (const auto r = node.optional_child("riemann")) {
-    fluid.riemann.continuity = r->flag_or("continuity", true);
+    fluid.riemann.continuity = r->flag_or("continuity", fluid.riemann.continuity);
+    if (fluid.riemann.continuity && fluid.options.delta_sph > 0.0)
+      r->fail("continuity", "the Riemann term in the continuity equation and delta_sph are two density diffusions; "
+                            "expected one (set riemann.continuity to false or delta_sph to 0)");
     fluid.riemann.momentum = r->flag_or("momentum", fluid.riemann.momentum);
     fluid.riemann.damp_separating = r->choice_or("limiter", {"approaching", "separating"}, "approaching") == "separating";
     fluid.riemann.limiter_eta = r->positive_or("eta", 3.0);
@@ -118,9 +126,10 @@ FluidBody read_fluid(const SceneNode& node, const DomainBox& box, double& budget
   fluid.riemann.configure(m.eos.rho0, m.eos.c0);
 
   FluidOptions& o = fluid.options;
-  const std::string density = node.choice_or("density_reinitialisation", {"automatic", "internal", "free_surface"}, "automatic");
+  const std::string density = node.choice_or("density_reinitialisation", {"automatic", "internal", "free_surface", "none"}, "automatic");
   o.density = density == "internal"     ? DensityReinitialisation::Internal
               : density == "free_surface" ? DensityReinitialisation::FreeSurface
+              : density == "none"         ? DensityReinitialisation::None
                                           : DensityReinitialisation::Automatic;
   const std::string reference = node.choice_or("pressure_reference", {"automatic", "mean", "zero"}, "automatic");
   o.pressure_reference = reference == "mean"   ? PressureReference::Mean

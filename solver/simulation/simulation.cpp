@@ -115,20 +115,21 @@ constexpr std::size_t kSortInterval = 100;  // advection steps between reorderin
 
 void Simulation::resolve_automatic_fluid_options() {
   FluidOptions& o = fluid_->options;
-  if (o.density == DensityReinitialisation::Automatic) {
-    // Gravity along an axis that is not periodic pulls the fluid onto a floor under open space: a
-    // free surface. A constant force along a periodic axis drives a confined flow (a channel, an
-    // array of bodies), and a fluid without one is confined by its walls. The kernel supports of
-    // the initial particles cannot tell these apart: a lattice cut by a slanted or curved wall
-    // leaves particles as empty (74-84 % filled) as the top row under a free surface (79 %).
-    bool gravity_on_open_axis = false;
-    for (int axis = 0; axis < 2; ++axis)
-      if (!box_.periodic[axis] && body_force.constant[axis] != 0.0) gravity_on_open_axis = true;
+  // Gravity along an axis that is not periodic pulls the fluid onto a floor under open space: a
+  // free surface. A constant force along a periodic axis drives a confined flow (a channel, an
+  // array of bodies), and a fluid without one is confined by its walls. The kernel supports of
+  // the initial particles cannot tell these apart: a lattice cut by a slanted or curved wall
+  // leaves particles as empty (74-84 % filled) as the top row under a free surface (79 %).
+  bool gravity_on_open_axis = false;
+  for (int axis = 0; axis < 2; ++axis)
+    if (!box_.periodic[axis] && body_force.constant[axis] != 0.0) gravity_on_open_axis = true;
+  if (o.density == DensityReinitialisation::Automatic)
     o.density = gravity_on_open_axis ? DensityReinitialisation::FreeSurface : DensityReinitialisation::Internal;
-  }
   // An open boundary sets the pressure level (a pressure condition, or the fluid beyond an inlet):
   // the pressure is absolute, as under a free surface.
-  const bool confined = o.density == DensityReinitialisation::Internal && open_boundaries.empty();
+  const bool confined = (o.density == DensityReinitialisation::Internal ||
+                         (o.density == DensityReinitialisation::None && !gravity_on_open_axis)) &&
+                        open_boundaries.empty();
   if (o.pressure_reference == PressureReference::Automatic)
     o.pressure_reference = confined ? PressureReference::Mean : PressureReference::Zero;
 }
