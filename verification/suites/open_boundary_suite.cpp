@@ -231,12 +231,13 @@ void run_channel_part(const SuiteContext& ctx, SuiteSummary& summary) {
   // column over the benchmark's ramp needs rho L dU/dt = 2 rho U0^2 at the inlet and the
   // stagnation point adds 1.1 rho U0^2, i.e. 3 % density by themselves (reports/open-boundaries.md).
   // At c = 40 U0 that part is 16 times smaller. What the boundaries answer for is the fluid near
-  // them (within D of a plane), where the seam's deficit was: checked at c = 40 U0. Elsewhere the
-  // largest deviation (recorded) is in fluid particles caught inside the cylinder, in the slot the
-  // scene leaves between the cylinder's rings and the beam's lattice (5-11 %, whatever c; the
-  // periodic scene has them too).
+  // them (within D of a plane), where the seam's deficit was, and, at c = 40 U0, the whole channel
+  // (until the cylinder's ring fill was fixed, fluid particles caught in a slot inside the cylinder
+  // made 5-15 % there whatever c).
   check_at_most_or_missing(summary, fmt::format("largest density deviation within D of the inlet and outlet during the ramp, c = 40 U0 (D/dp={})", resolution),
                            run_metric(high_c, "ramp_density_deviation_near_planes"), 0.03, "issue 18");
+  check_at_most_or_missing(summary, fmt::format("largest density deviation anywhere during the ramp, c = 40 U0 (D/dp={})", resolution),
+                           run_metric(high_c, "ramp_density_deviation"), 0.03, "issue 18");
   summary.add_run(std::move(paper_c));
   summary.add_run(std::move(high_c));
 }
