@@ -286,6 +286,37 @@ ObservedQuantity read_quantity(const SceneNode& node) {
   return ObservedQuantity::Force;
 }
 
+// A contact of two solids, or of a solid and a wall (the wall becomes the second body), by name.
+SolidContact read_solid_contact(const SceneNode& node, const Simulation& sim) {
+  const Json list = node.has("bodies") ? node.raw().at("bodies") : Json();
+  if (!list.is_array() || list.size() != 2 || !list[0].is_string() || !list[1].is_string())
+    node.fail("bodies", "expected the names of two bodies, two solids or a solid and a wall, e.g. [\"leaflet_top\", "
+                        "\"leaflet_bottom\"]");
+  std::optional<std::size_t> solid[2], wall[2];
+  for (int k = 0; k < 2; ++k) {
+    const std::string name = list[k].get<std::string>();
+    solid[k] = sim.solid_index(name);
+    for (std::size_t w = 0; w < sim.walls().size() && !solid[k]; ++w)
+      if (sim.walls()[w].name == name) wall[k] = w;
+    if (!solid[k] && !wall[k]) node.fail("bodies", "'" + name + "' is neither a solid body nor a wall of this scene");
+  }
+  if (wall[0] && wall[1]) node.fail("bodies", "two walls never meet: a contact needs at least one solid body");
+  SolidContact contact;
+  contact.second_is_wall = wall[0] || wall[1];
+  contact.first = solid[0] ? *solid[0] : *solid[1];
+  contact.second = wall[0] ? *wall[0] : wall[1] ? *wall[1] : *solid[1];
+  if (!contact.second_is_wall && contact.first == contact.second)
+    node.fail("bodies", "a contact needs two different bodies (self-contact is not modelled)");
+  for (const SolidContact& other : sim.solid_contacts)
+    if (other.second_is_wall == contact.second_is_wall &&
+        (contact.second_is_wall ? std::pair(other.first, other.second) == std::pair(contact.first, contact.second)
+                                : std::minmax(other.first, other.second) == std::minmax(contact.first, contact.second)))
+      node.fail("bodies", "this pair of bodies already has a contact");
+  contact.stiffness = node.positive_or("stiffness", 0.0);
+  node.finish();
+  return contact;
+}
+
 }  // namespace
 
 LoadedScene build_scene(const Json& document, const std::string& file, const SceneLimits& limits) {
@@ -333,25 +364,7 @@ LoadedScene build_scene(const Json& document, const std::string& file, const Sce
   }
   if (!sim->has_fluid() && sim->solids().empty())
     root.fail("", "the scene has neither a fluid nor a solid body: nothing to simulate");
-  for (const SceneNode& node : root.children("solid_contacts")) {
-    const Json list = node.has("bodies") ? node.raw().at("bodies") : Json();
-    if (!list.is_array() || list.size() != 2 || !list[0].is_string() || !list[1].is_string())
-      node.fail("bodies", "expected the names of two solid bodies, e.g. [\"leaflet_top\", \"leaflet_bottom\"]");
-    SolidContact contact;
-    for (int k = 0; k < 2; ++k) {
-      const std::string name = list[k].get<std::string>();
-      const std::optional<std::size_t> index = sim->solid_index(name);
-      if (!index) node.fail("bodies", "'" + name + "' is not a solid body of this scene");
-      (k == 0 ? contact.first : contact.second) = *index;
-    }
-    if (contact.first == contact.second) node.fail("bodies", "a contact needs two different bodies (self-contact is not modelled)");
-    for (const SolidContact& other : sim->solid_contacts)
-      if (std::minmax(other.first, other.second) == std::minmax(contact.first, contact.second))
-        node.fail("bodies", "this pair of bodies already has a contact");
-    contact.stiffness = node.positive_or("stiffness", 0.0);
-    node.finish();
-    sim->solid_contacts.push_back(contact);
-  }
+  for (const SceneNode& node : root.children("solid_contacts")) sim->solid_contacts.push_back(read_solid_contact(node, *sim));
 
   {  // A periodic axis must hold three kernel supports, or the cell list would see a particle twice.
     Real reach = 0.0;

@@ -14,28 +14,48 @@ Real default_contact_stiffness(const SolidBody& a, const SolidBody& b) {
   return std::min(modulus(a), modulus(b));
 }
 
-void prepare_solid_contact(SolidContact& contact, const SolidBody& a, const SolidBody& b) {
-  const Real support = std::max(a.dp, b.dp);
+namespace {
+
+// One side of a contact: its particles' positions and volumes, those that take no part (null: none),
+// and where their forces go (null: a fixed wall, whose reaction is not applied).
+struct ContactSide {
+  const Vec2Array& pos;
+  const RealArray& vol;
+  const std::vector<std::uint8_t>* excluded = nullptr;
+  Vec2Array* force = nullptr;
+
+  bool takes_part(std::size_t i) const { return excluded == nullptr || (*excluded)[i] == 0; }
+};
+
+ContactSide side_of(const SolidBody& s) { return {s.particles.pos, s.particles.vol0}; }
+ContactSide side_of(SolidBody& s) { return {s.particles.pos, s.particles.vol0, nullptr, &s.external_force}; }
+ContactSide wall_side(const SolidContact& c) { return {c.wall_pos, c.wall_vol}; }
+// A solid against a wall: its clamped particles are attached to that wall (header).
+ContactSide solid_side_at_wall(SolidBody& s) {
+  return {s.particles.pos, s.particles.vol0, &s.particles.constrained, &s.external_force};
+}
+ContactSide solid_side_at_wall(const SolidBody& s) { return {s.particles.pos, s.particles.vol0, &s.particles.constrained}; }
+
+void prepare(SolidContact& contact, Real support, Real default_stiffness) {
   contact.kernel = WendlandC2(0.5 * support);
   contact.skin = 0.5 * support;
-  if (contact.stiffness <= 0.0) contact.stiffness = default_contact_stiffness(a, b);
+  if (contact.stiffness <= 0.0) contact.stiffness = default_stiffness;
   contact.travel = std::numeric_limits<Real>::infinity();
   contact.candidates.clear();
 }
 
-void refresh_contact_candidates(SolidContact& contact, const SolidBody& a, const SolidBody& b) {
+void refresh(SolidContact& contact, const ContactSide& a, const ContactSide& b) {
   if (contact.travel <= contact.skin) return;
   const Real radius = contact.kernel.cutoff() + contact.skin;
   const DomainBox unbounded;  // solids are never wrapped: their positions are used as they are
   CellGrid grid(unbounded, radius);
-  grid.build(b.particles.pos);
+  grid.build(b.pos);
   contact.candidates.clear();
-  const Vec2Array& pa = a.particles.pos;
-  for (std::size_t i = 0; i < pa.size(); ++i) {
-    if (!grid.within_reach(pa[i])) continue;
-    grid.for_each_run_near(pa[i], [&](Index begin, Index end, const Vec2&) {
+  for (std::size_t i = 0; i < a.pos.size(); ++i) {
+    if (!a.takes_part(i) || !grid.within_reach(a.pos[i])) continue;
+    grid.for_each_run_near(a.pos[i], [&](Index begin, Index end, const Vec2&) {
       for (Index k = begin; k < end; ++k)
-        if ((pa[i] - grid.sorted_position(k)).squaredNorm() < radius * radius)
+        if ((a.pos[i] - grid.sorted_position(k)).squaredNorm() < radius * radius && b.takes_part(grid.sorted_index(k)))
           contact.candidates.emplace_back(static_cast<Index>(i), grid.sorted_index(k));
     });
   }
@@ -45,42 +65,88 @@ void refresh_contact_candidates(SolidContact& contact, const SolidBody& a, const
   contact.travel = 0.0;
 }
 
-namespace {
-// phi of every particle of both bodies that has a candidate pair (others stay 0).
-void contact_overlaps(const SolidContact& contact, const SolidBody& a, const SolidBody& b, RealArray& phi_a,
+// phi of every particle of both sides that has a candidate pair (others stay 0).
+void contact_overlaps(const SolidContact& contact, const ContactSide& a, const ContactSide& b, RealArray& phi_a,
                       RealArray& phi_b) {
-  phi_a.assign(a.particles.size(), 0.0);
-  phi_b.assign(b.particles.size(), 0.0);
+  phi_a.assign(a.pos.size(), 0.0);
+  phi_b.assign(b.pos.size(), 0.0);
   for (const auto& [i, j] : contact.candidates) {
-    const Real w = contact.kernel.W((a.particles.pos[i] - b.particles.pos[j]).norm());
-    phi_a[i] += b.particles.vol0[j] * w;
-    phi_b[j] += a.particles.vol0[i] * w;
+    const Real w = contact.kernel.W((a.pos[i] - b.pos[j]).norm());
+    phi_a[i] += b.vol[j] * w;
+    phi_b[j] += a.vol[i] * w;
   }
 }
-}  // namespace
 
-void add_contact_forces(const SolidContact& contact, SolidBody& a, SolidBody& b) {
+void add_forces(const SolidContact& contact, const ContactSide& a, const ContactSide& b) {
   if (contact.candidates.empty()) return;
   RealArray phi_a, phi_b;
   contact_overlaps(contact, a, b, phi_a, phi_b);
   for (const auto& [i, j] : contact.candidates) {
-    const Vec2 d = a.particles.pos[i] - b.particles.pos[j];
+    const Vec2 d = a.pos[i] - b.pos[j];
     const Real r = d.norm();
     if (r >= contact.kernel.cutoff() || r == 0.0) continue;
     const Real pressure_sum = contact.stiffness * (phi_a[i] + phi_b[j]);
-    const Vec2 f = -(a.particles.vol0[i] * b.particles.vol0[j] * pressure_sum * contact.kernel.dW(r) / r) * d;
-    a.external_force[i] += f;
-    b.external_force[j] -= f;
+    const Vec2 f = -(a.vol[i] * b.vol[j] * pressure_sum * contact.kernel.dW(r) / r) * d;
+    if (a.force) (*a.force)[i] += f;
+    if (b.force) (*b.force)[j] -= f;
   }
 }
 
-Real largest_contact_overlap(const SolidContact& contact, const SolidBody& a, const SolidBody& b) {
+Real largest_overlap(const SolidContact& contact, const ContactSide& a, const ContactSide& b) {
   RealArray phi_a, phi_b;
   contact_overlaps(contact, a, b, phi_a, phi_b);
   Real largest = 0.0;
   for (Real p : phi_a) largest = std::max(largest, p);
   for (Real p : phi_b) largest = std::max(largest, p);
   return largest;
+}
+
+}  // namespace
+
+void prepare_solid_contact(SolidContact& contact, const SolidBody& a, const SolidBody& b) {
+  prepare(contact, std::max(a.dp, b.dp), default_contact_stiffness(a, b));
+}
+
+void refresh_contact_candidates(SolidContact& contact, const SolidBody& a, const SolidBody& b) {
+  refresh(contact, side_of(a), side_of(b));
+}
+
+void add_contact_forces(const SolidContact& contact, SolidBody& a, SolidBody& b) {
+  add_forces(contact, side_of(a), side_of(b));
+}
+
+Real largest_contact_overlap(const SolidContact& contact, const SolidBody& a, const SolidBody& b) {
+  return largest_overlap(contact, side_of(a), side_of(b));
+}
+
+void prepare_wall_contact(SolidContact& contact, const SolidBody& solid, const WallParticles& wall, Real wall_dp) {
+  prepare(contact, std::max(solid.dp, wall_dp), default_contact_stiffness(solid, solid));
+  contact.wall_pos = wall.pos;
+  contact.wall_vol = wall.vol;
+}
+
+void refresh_contact_candidates(SolidContact& contact, const SolidBody& solid) {
+  refresh(contact, solid_side_at_wall(solid), wall_side(contact));
+}
+
+void add_contact_forces(const SolidContact& contact, SolidBody& solid) {
+  add_forces(contact, solid_side_at_wall(solid), wall_side(contact));
+}
+
+Real largest_contact_overlap(const SolidContact& contact, const SolidBody& solid) {
+  return largest_overlap(contact, solid_side_at_wall(solid), wall_side(contact));
+}
+
+void apply_contact(SolidContact& contact, std::span<SolidBody> solids) {
+  SolidBody& a = solids[contact.first];
+  if (contact.second_is_wall) {
+    refresh_contact_candidates(contact, a);
+    add_contact_forces(contact, a);
+    return;
+  }
+  SolidBody& b = solids[contact.second];
+  refresh_contact_candidates(contact, a, b);
+  add_contact_forces(contact, a, b);
 }
 
 }  // namespace mrsph

@@ -17,12 +17,19 @@
 // 0.76 dp; with k_c 1/500 of it they went through each other). Stability: during a hard contact the
 // acceleration term of the solid criterion (Eq. 34) shortens the sub-step; measured stable, energy kept
 // to 0.4 %, up to 20 rho0 c_S^2 (the collision of tests/test_solid_contact.cpp).
+// A fixed wall as the second body: the same penalty with the wall's dummy particles as b, whose
+// reaction is not applied (the wall is fixed). The solid's clamped particles take no part: the clamp
+// is their attachment to the wall, where they sit inside the contact's reach for ever. Without it a
+// valve leaflet pushed upstream by a reversed pressure passed through the vein wall
+// (reports/open-boundaries.md).
 #pragma once
 
 #include "kernel/wendland_c2.hpp"
+#include "particles/wall_particles.hpp"
 #include "solid/solid_body.hpp"
 
 #include <limits>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -30,6 +37,7 @@ namespace mrsph {
 
 struct SolidContact {
   std::size_t first = 0, second = 0;  // indices of the two bodies in the simulation's solids
+  bool second_is_wall = false;        // then `second` indexes the simulation's walls
   Real stiffness = 0.0;               // k_c [Pa]; 0 means the default above
 
   // Derived by prepare_solid_contact; the candidate pairs are a Verlet list of radius support + skin,
@@ -38,6 +46,9 @@ struct SolidContact {
   Real skin = 0.0;
   Real travel = std::numeric_limits<Real>::infinity();
   std::vector<std::pair<Index, Index>> candidates;  // (a in first, b in second), sorted
+  // A wall's particles (positions, volumes), copied by prepare_wall_contact: a wall never moves.
+  Vec2Array wall_pos;
+  RealArray wall_vol;
 };
 
 Real default_contact_stiffness(const SolidBody& a, const SolidBody& b);
@@ -54,5 +65,15 @@ void add_contact_forces(const SolidContact& contact, SolidBody& a, SolidBody& b)
 
 // The largest overlap phi over both bodies (0 when apart), for diagnostics and tests.
 Real largest_contact_overlap(const SolidContact& contact, const SolidBody& a, const SolidBody& b);
+
+// The same for a solid and a fixed wall (contact.second_is_wall): the kernel's support is the larger
+// spacing, the default stiffness the solid's rho0 c_S^2; forces go to the solid only.
+void prepare_wall_contact(SolidContact& contact, const SolidBody& solid, const WallParticles& wall, Real wall_dp);
+void refresh_contact_candidates(SolidContact& contact, const SolidBody& solid);
+void add_contact_forces(const SolidContact& contact, SolidBody& solid);
+Real largest_contact_overlap(const SolidContact& contact, const SolidBody& solid);
+
+// Refreshes the candidates of any contact and adds its forces: the solids' external_force.
+void apply_contact(SolidContact& contact, std::span<SolidBody> solids);
 
 }  // namespace mrsph

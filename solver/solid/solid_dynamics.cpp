@@ -263,7 +263,8 @@ long long advance_solids(std::span<SolidBody> solids, std::span<SolidContact> co
     return std::max(Real(0), rate[b] * solids[b].h() - solids[b].material.sound_speed());
   };
   const auto add_travel = [&](Real duration) {
-    for (SolidContact& c : contacts) c.travel += duration * (speed_bound(c.first) + speed_bound(c.second));
+    for (SolidContact& c : contacts)
+      c.travel += duration * (speed_bound(c.first) + (c.second_is_wall ? Real(0) : speed_bound(c.second)));
   };
   SplitStep step = split_remaining(dt, criterion());
   for (std::size_t b = 0; b < n; ++b) half_step(solids[b], 0.5 * step.size, eta[b]);
@@ -273,10 +274,7 @@ long long advance_solids(std::span<SolidBody> solids, std::span<SolidContact> co
   for (;;) {
     const Vec2 g = body_acceleration(t + elapsed + 0.5 * step.size);
     for (SolidBody& solid : solids) begin_external_forces(solid);
-    for (SolidContact& c : contacts) {
-      refresh_contact_candidates(c, solids[c.first], solids[c.second]);
-      add_contact_forces(c, solids[c.first], solids[c.second]);
-    }
+    for (SolidContact& c : contacts) apply_contact(c, solids);
     for (std::size_t b = 0; b < n; ++b) rate[b] = momentum_pass(solids[b], step.size, g);
     add_travel(0.5 * step.size);
     elapsed += step.size;
