@@ -44,6 +44,38 @@ Real read_h_over_dp(const SceneNode& node, Real fallback) {
   return r;
 }
 
+// The fluid's numerical options (FluidOptions), beyond the diffusion read with the material.
+void read_fluid_options(const SceneNode& node, FluidOptions& o) {
+  const std::string density = node.choice_or("density_reinitialisation", {"automatic", "internal", "free_surface", "none"}, "automatic");
+  o.density = density == "internal"     ? DensityReinitialisation::Internal
+              : density == "free_surface" ? DensityReinitialisation::FreeSurface
+              : density == "none"         ? DensityReinitialisation::None
+                                          : DensityReinitialisation::Automatic;
+  const std::string reference = node.choice_or("pressure_reference", {"automatic", "mean", "zero"}, "automatic");
+  o.pressure_reference = reference == "mean"   ? PressureReference::Mean
+                         : reference == "zero" ? PressureReference::Zero
+                                               : PressureReference::Automatic;
+  o.transport_velocity_alpha = node.non_negative_or("transport_velocity_alpha", 0.0);
+  o.relaxation_steps = node.count_or("relaxation_steps", 0, 100000);
+  o.relaxation_perturbation = node.non_negative_or("relaxation_perturbation", 0.0);
+  if (o.relaxation_perturbation > 0.5)
+    node.fail("relaxation_perturbation", fmt::format("expected a fraction of dp in [0, 0.5], got {:g}", o.relaxation_perturbation));
+  o.reference_velocity = node.positive_or("reference_velocity", 1.0);
+  o.viscous_lattice_correction = node.flag_or("viscous_lattice_correction", o.viscous_lattice_correction);
+  o.pressure_lattice_correction = node.flag_or("pressure_lattice_correction", o.pressure_lattice_correction);
+  o.advection_cfl = node.positive_or("advection_cfl", o.advection_cfl);
+  o.acoustic_cfl = node.positive_or("acoustic_cfl", o.acoustic_cfl);
+}
+
+ElasticMaterial read_elastic_material(const SceneNode& mat) {
+  const std::string model_name = mat.choice("model", {"saint_venant_kirchhoff", "linear_elastic", "neo_hookean"});
+  const Real rho = mat.positive("density");
+  const Real E = mat.positive("youngs_modulus");
+  const Real nu = mat.in_range("poisson_ratio", -1.0, 0.5);
+  mat.finish();
+  return ElasticMaterial(solid_model_from_name(model_name), rho, E, nu);
+}
+
 }  // namespace
 
 FluidBody read_fluid(const SceneNode& node, const DomainBox& box, double& budget, ShapePtr& region,
@@ -82,26 +114,7 @@ FluidBody read_fluid(const SceneNode& node, const DomainBox& box, double& budget
   }
   fluid.riemann.configure(m.eos.rho0, m.eos.c0);
 
-  FluidOptions& o = fluid.options;
-  const std::string density = node.choice_or("density_reinitialisation", {"automatic", "internal", "free_surface", "none"}, "automatic");
-  o.density = density == "internal"     ? DensityReinitialisation::Internal
-              : density == "free_surface" ? DensityReinitialisation::FreeSurface
-              : density == "none"         ? DensityReinitialisation::None
-                                          : DensityReinitialisation::Automatic;
-  const std::string reference = node.choice_or("pressure_reference", {"automatic", "mean", "zero"}, "automatic");
-  o.pressure_reference = reference == "mean"   ? PressureReference::Mean
-                         : reference == "zero" ? PressureReference::Zero
-                                               : PressureReference::Automatic;
-  o.transport_velocity_alpha = node.non_negative_or("transport_velocity_alpha", 0.0);
-  o.relaxation_steps = node.count_or("relaxation_steps", 0, 100000);
-  o.relaxation_perturbation = node.non_negative_or("relaxation_perturbation", 0.0);
-  if (o.relaxation_perturbation > 0.5)
-    node.fail("relaxation_perturbation", fmt::format("expected a fraction of dp in [0, 0.5], got {:g}", o.relaxation_perturbation));
-  o.reference_velocity = node.positive_or("reference_velocity", 1.0);
-  o.viscous_lattice_correction = node.flag_or("viscous_lattice_correction", o.viscous_lattice_correction);
-  o.pressure_lattice_correction = node.flag_or("pressure_lattice_correction", o.pressure_lattice_correction);
-  o.advection_cfl = node.positive_or("advection_cfl", o.advection_cfl);
-  o.acoustic_cfl = node.positive_or("acoustic_cfl", o.acoustic_cfl);
+  read_fluid_options(node, fluid.options);
   velocity = read_initial_velocity(node);
   node.finish();
 
@@ -138,13 +151,8 @@ SolidBody read_solid(const SceneNode& node, const DomainBox& box, double& budget
   const Real h_over_dp = read_h_over_dp(node, 1.3);
   region = read_region(node, "region");
   const FillSpec fill = read_fill(node, "fill");
-  const SceneNode mat = node.child("material");
-  const std::string model_name = mat.choice("model", {"saint_venant_kirchhoff", "linear_elastic", "neo_hookean"});
-  const Real rho = mat.positive("density");
-  const Real E = mat.positive("youngs_modulus");
-  const Real nu = mat.in_range("poisson_ratio", -1.0, 0.5);
-  mat.finish();
-  SolidBody solid(name, dp, h_over_dp, ElasticMaterial(solid_model_from_name(model_name), rho, E, nu));
+  SolidBody solid(name, dp, h_over_dp, read_elastic_material(node.child("material")));
+  const Real rho = solid.material.density();
   solid.options.cfl = node.positive_or("cfl", solid.options.cfl);
   solid.options.damping_coefficient = node.non_negative_or("damping", solid.options.damping_coefficient);
   solid.options.gradient_correction =
