@@ -158,3 +158,44 @@ TEST_CASE("The equation of state's background pressure is the pressure at rest, 
     CHECK(eos.pressure(1010.0) - eos.pressure(1000.0) == Approx(none.pressure(1010.0) - none.pressure(1000.0)));
   }
 }
+
+TEST_CASE("A pressure boundary with a total entering pressure: Bernoulli's static pressure where fluid enters, "
+          "p_b where it leaves", "[open_boundary]") {
+  // One bin of an outlet at x = 1 (outward normal +x), p_b = 5, rho0 = 1: a domain particle in the
+  // band and a buffer particle 0.1 beyond the plane, the domain's pressure p_b (slope zero).
+  const auto buffer_pressure = [](Real u, bool total) {
+    FluidBody fluid("fluid", 0.1, 1.3);
+    fluid.material.eos.rho0 = 1.0;
+    fluid.material.eos.c0 = 10.0;
+    OpenBoundary outlet;
+    outlet.axis = 0;
+    outlet.plane = 1.0;
+    outlet.side = 1;
+    outlet.width = 0.4;
+    outlet.span_lower = 0.0;
+    outlet.span_upper = 0.1;
+    outlet.pressure = [](Real) { return 5.0; };
+    outlet.total_pressure_inflow = total;
+    std::vector<OpenBoundary> boundaries{outlet};
+    FluidParticles& f = fluid.particles;
+    f.resize(2);
+    f.pos[0] = Vec2(0.95, 0.05);
+    f.pos[1] = Vec2(1.10, 0.05);
+    for (std::size_t i = 0; i < 2; ++i) {
+      f.mass[i] = 0.01;
+      f.rho[i] = 1.0;
+      f.p[i] = 5.0;
+      f.vel[i] = Vec2(u, 0.0);
+    }
+    classify_fluid_zones(f, boundaries);
+    impose_buffer_states(fluid, boundaries, 0.0, 0.0);
+    // The buffer pressure is p at the plane continued with the slope through (0, p_plane) and the
+    // domain particle (depth -0.05, p = 5): read p at the plane back from the two.
+    const Real slope = (f.p[1] - 5.0) / (0.10 + 0.05);
+    return f.p[1] - slope * 0.10;
+  };
+  // Entering at 2 (u_n = -2): p_b - rho0 u^2 / 2 = 5 - 2 = 3 at the plane; leaving, or static: p_b.
+  CHECK(buffer_pressure(-2.0, true) == Approx(3.0));
+  CHECK(buffer_pressure(+2.0, true) == Approx(5.0));
+  CHECK(buffer_pressure(-2.0, false) == Approx(5.0));
+}

@@ -84,6 +84,10 @@ BandMeans domain_band_means(const FluidBody& fluid, const OpenBoundary& b, const
   return filled;
 }
 
+// rho0 u_n^2 / 2 where the fluid enters (u_n < 0 along the outward normal), else 0: the drop from
+// the total pressure p_b of fluid drawn from rest to its static pressure at the plane (header).
+Real entering_dynamic_pressure(Real rho0, Real u_n) { return u_n < 0.0 ? 0.5 * rho0 * u_n * u_n : 0.0; }
+
 // ubar_n of the weakly reflecting condition, relaxed towards u_n over tau (exact for a constant
 // u_n over the step); set to u_n on first use.
 void relax_mean_normal_velocity(OpenBoundary& b, const BandMeans& means, Real dt) {
@@ -190,6 +194,9 @@ void impose_buffer_states(FluidBody& fluid, std::vector<OpenBoundary>& boundarie
       if (!reflecting)
         for (std::size_t bin = 0; bin < bins.count; ++bin)
           plane_p[bin] += eos.impedance() * (means.vel[bin].dot(b.normal()) - b.mean_normal_velocity[bin]);
+      if (b.total_pressure_inflow)
+        for (std::size_t bin = 0; bin < bins.count; ++bin)
+          plane_p[bin] -= entering_dynamic_pressure(eos.rho0, means.vel[bin].dot(b.normal()));
       slope = means.slope_through(std::accumulate(plane_p.begin(), plane_p.end(), 0.0) / static_cast<Real>(bins.count));
     }
     const std::uint8_t zone = zone_of(k);

@@ -11,7 +11,12 @@
 //                       (the incoming characteristic p - rho0 c u_n held at its mean: a wave leaving
 //                       the domain is not sent back, the mean pressure is still p_b); the normal
 //                       velocity u_n extrapolated, no tangential velocity (the flow crosses the
-//                       plane normally: buffer particles, which feel no wall, cannot drift into one)
+//                       plane normally: buffer particles, which feel no wall, cannot drift into one).
+//                       Optionally p_b is a total pressure where the fluid enters (u_n < 0, inflow
+//                       or backflow): p = p_b - rho0 u_n^2 / 2, Bernoulli's static pressure of fluid
+//                       drawn from rest at p_b. It bounds the energy a backflow brings in: with the
+//                       static p_b a bin's inflow meets no resistance, and at the valve's outlet a
+//                       streak of particles along one bin ran away to Mach 1 when the valve closed
 //   both                rho = EOS^-1(p), vol = m / rho
 // Extrapolation from the domain's particles within one kernel support of the plane (the band), in
 // bins of width dp along the plane (a channel's profile u(y) is kept): the velocity with zero normal
@@ -58,6 +63,7 @@ struct OpenBoundary {
   InflowProfile velocity;              // velocity condition
   std::function<Real(Real)> pressure;  // pressure condition: p_b(t)
   Real reflection_time = 0.0;          // tau of the weakly reflecting pressure condition; 0: p = p_b
+  bool total_pressure_inflow = false;  // p_b is the total pressure of entering fluid (above)
   OpenBoundaryLedger ledger;
   RealArray mean_normal_velocity;      // ubar_n per bin (weakly reflecting state; empty until first use)
 

@@ -7,7 +7,8 @@
 //   "open_boundaries": [{"name", "axis": "x"|"y", "side": "lower"|"upper" (the end of the domain it
 //                        is on), "plane", "width", "span": [lo, hi] (the buffer's extent along the
 //                        plane), "condition": "velocity"|"pressure", "profile": PROFILE (velocity),
-//                        "pressure": EXPR of t (pressure), "reflection_time" (pressure; 0: reflecting)}]
+//                        "pressure": EXPR of t (pressure), "reflection_time" (pressure; 0: reflecting),
+//                        "entering_pressure": "static"|"total" (pressure: what p_b is where fluid enters)}]
 #pragma once
 
 #include "boundary/inflow.hpp"
