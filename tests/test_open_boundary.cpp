@@ -199,3 +199,55 @@ TEST_CASE("A pressure boundary with a total entering pressure: Bernoulli's stati
   CHECK(buffer_pressure(+2.0, true) == Approx(5.0));
   CHECK(buffer_pressure(-2.0, false) == Approx(5.0));
 }
+
+TEST_CASE("A pressure boundary's smoothed normal velocity holds a parabolic profile exactly and not a streak "
+          "one bin wide", "[open_boundary]") {
+  // An outlet at x = 1 across a channel 0 < y < 1 (ten bins of dp = 0.1): band particles in two
+  // columns (x = 0.95, 0.85) at every bin centre, one buffer particle per bin at x = 1.1.
+  const auto buffer_velocity = [](bool smooth, Real streak) {
+    FluidBody fluid("fluid", 0.1, 1.3);
+    fluid.material.eos.rho0 = 1.0;
+    fluid.material.eos.c0 = 10.0;
+    OpenBoundary outlet;
+    outlet.axis = 0;
+    outlet.plane = 1.0;
+    outlet.side = 1;
+    outlet.width = 0.4;
+    outlet.span_lower = 0.0;
+    outlet.span_upper = 1.0;
+    outlet.pressure = [](Real) { return 0.0; };
+    outlet.smooth_normal_velocity = smooth;
+    std::vector<OpenBoundary> boundaries{outlet};
+    FluidParticles& f = fluid.particles;
+    f.resize(30);
+    for (int k = 0; k < 10; ++k) {
+      const Real y = 0.05 + 0.1 * k;
+      const Real u = 4.0 * y * (1.0 - y) + (k == 6 ? streak : 0.0);
+      for (int c = 0; c < 3; ++c) {
+        const std::size_t i = 3 * k + c;
+        f.pos[i] = Vec2(c == 2 ? 1.1 : 0.95 - 0.1 * c, y);
+        f.mass[i] = 0.01;
+        f.rho[i] = 1.0;
+        f.vel[i] = Vec2(u, 0.0);
+      }
+    }
+    classify_fluid_zones(f, boundaries);
+    impose_buffer_states(fluid, boundaries, 0.0, 0.0);
+    std::vector<Real> u_buffer;
+    for (int k = 0; k < 10; ++k) u_buffer.push_back(f.vel[3 * k + 2].x());
+    return u_buffer;
+  };
+  const std::vector<Real> profile = buffer_velocity(true, 0.0);
+  for (int k = 0; k < 10; ++k) {
+    const Real y = 0.05 + 0.1 * k;
+    CHECK(profile[k] == Approx(4.0 * y * (1.0 - y)).margin(1e-12));
+  }
+  // A streak of 1 in bin 6: the bins' means pass it whole; the polynomial keeps a fraction spread
+  // over its neighbours (5 terms over 10 bins: at most about half).
+  const std::vector<Real> by_bins = buffer_velocity(false, 1.0);
+  const std::vector<Real> smoothed = buffer_velocity(true, 1.0);
+  const Real parabola_6 = 4.0 * 0.65 * 0.35;
+  CHECK(by_bins[6] - parabola_6 == Approx(1.0));
+  CHECK(smoothed[6] - parabola_6 < 0.6);
+  CHECK(smoothed[6] - parabola_6 > 0.0);
+}

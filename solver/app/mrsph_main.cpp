@@ -53,11 +53,12 @@ void print_scene(const mrsph::LoadedScene& scene) {
                100.0 * mrsph::smallest_support_fraction(f, sim.fluid_inner(), sim.fluid_contacts()));
   }
   for (const auto& b : sim.open_boundaries)
-    fmt::print("open       {:<12} {} {} = {:g}, buffer {:g} deep, {} condition\n", b.name, b.side > 0 ? "upper" : "lower",
+    fmt::print("open       {:<12} {} {} = {:g}, buffer {:g} deep, {} condition{}\n", b.name, b.side > 0 ? "upper" : "lower",
                b.axis == 0 ? "x" : "y", b.plane, b.width,
                b.condition == mrsph::OpenBoundaryCondition::Velocity ? "velocity"
                : b.reflection_time > 0.0 ? fmt::format("weakly reflecting pressure (tau {:g})", b.reflection_time)
-                                         : std::string("pressure"));
+                                         : std::string("pressure"),
+               b.total_pressure_inflow ? ", total pressure where fluid enters" : "");
   for (const auto& w : sim.walls())
     fmt::print("wall       {:<12} {:>8} particles  dp {:g}  h {:g}\n", w.name, w.particles.size(), w.dp, w.h());
   for (const auto& s : sim.solids()) {

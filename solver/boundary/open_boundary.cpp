@@ -84,6 +84,46 @@ BandMeans domain_band_means(const FluidBody& fluid, const OpenBoundary& b, const
   return filled;
 }
 
+// The normal velocity of the band's particles fitted by least squares with the Legendre polynomials
+// P0..P4 of the tangential coordinate mapped to [-1, 1] over the span, evaluated at each bin's
+// centre (header). Fewer band particles than terms: the bins' means.
+RealArray smoothed_normal_velocity(const FluidBody& fluid, const OpenBoundary& b, const PlaneBins& bins,
+                                   const BandMeans& means) {
+  constexpr int kTerms = 5;
+  using Basis = Eigen::Matrix<Real, kTerms, 1>;
+  const auto basis = [&](Real tangential) {
+    const Real s = 2.0 * (tangential - b.span_lower) / (b.span_upper - b.span_lower) - 1.0;
+    Basis p;
+    p[0] = 1.0;
+    p[1] = s;
+    for (int k = 1; k + 1 < kTerms; ++k) p[k + 1] = ((2 * k + 1) * s * p[k] - k * p[k - 1]) / (k + 1);  // Bonnet
+    return p;
+  };
+  const FluidParticles& f = fluid.particles;
+  const Real band = fluid.kernel.cutoff();
+  Eigen::Matrix<Real, kTerms, kTerms> normal_matrix = Eigen::Matrix<Real, kTerms, kTerms>::Zero();
+  Basis rhs = Basis::Zero();
+  int count = 0;
+  for (std::size_t i = 0; i < f.size(); ++i) {  // in particle order: bitwise reproducible
+    if (!f.in_domain(i)) continue;
+    const Real d = b.depth(f.pos[i]);
+    if (d > 0.0 || d <= -band) continue;
+    const Basis p = basis(f.pos[i][bins.tangent]);
+    normal_matrix += p * p.transpose();
+    rhs += p * f.vel[i].dot(b.normal());
+    ++count;
+  }
+  RealArray u_n(bins.count);
+  if (count < kTerms) {
+    for (std::size_t k = 0; k < bins.count; ++k) u_n[k] = means.vel[k].dot(b.normal());
+    return u_n;
+  }
+  const Basis coefficients = normal_matrix.partialPivLu().solve(rhs);
+  for (std::size_t k = 0; k < bins.count; ++k)
+    u_n[k] = basis(bins.lower + (static_cast<Real>(k) + 0.5) * bins.width).dot(coefficients);
+  return u_n;
+}
+
 // rho0 u_n^2 / 2 where the fluid enters (u_n < 0 along the outward normal), else 0: the drop from
 // the total pressure p_b of fluid drawn from rest to its static pressure at the plane (header).
 Real entering_dynamic_pressure(Real rho0, Real u_n) { return u_n < 0.0 ? 0.5 * rho0 * u_n * u_n : 0.0; }
@@ -181,7 +221,11 @@ void impose_buffer_states(FluidBody& fluid, std::vector<OpenBoundary>& boundarie
   for (std::size_t k = 0; k < boundaries.size(); ++k) {
     OpenBoundary& b = boundaries[k];
     const PlaneBins bins(b, fluid.dp);
-    const BandMeans means = domain_band_means(fluid, b, bins);
+    BandMeans means = domain_band_means(fluid, b, bins);
+    if (b.condition == OpenBoundaryCondition::Pressure && b.smooth_normal_velocity) {
+      const RealArray u_n = smoothed_normal_velocity(fluid, b, bins, means);
+      for (std::size_t bin = 0; bin < bins.count; ++bin) means.vel[bin] = u_n[bin] * b.normal();
+    }
     const bool reflecting = b.condition == OpenBoundaryCondition::Velocity || b.reflection_time <= 0.0;
     if (!reflecting) relax_mean_normal_velocity(b, means, dt);
     // Pressure condition: the pressure at the plane in each bin, p_b or, weakly reflecting,

@@ -20,7 +20,9 @@
 //   both                rho = EOS^-1(p), vol = m / rho
 // Extrapolation from the domain's particles within one kernel support of the plane (the band), in
 // bins of width dp along the plane (a channel's profile u(y) is kept): the velocity with zero normal
-// gradient (the bin's mean); the pressure continued linearly, with the slope of a least-squares line
+// gradient (the bin's mean, or optionally for a pressure condition the normal velocity's least-squares
+// polynomial of degree 4 along the plane, which holds a parabolic profile exactly but not a streak one
+// bin wide: with 2-3 particles per bin, the bin means let a single bin's inflow feed itself); the pressure continued linearly, with the slope of a least-squares line
 // of p against depth over the band (through (0, p_b) for the pressure condition), since a constant
 // buffer pressure would put a kink at the plane that the kernel smears half a support outwards.
 //
@@ -64,6 +66,8 @@ struct OpenBoundary {
   std::function<Real(Real)> pressure;  // pressure condition: p_b(t)
   Real reflection_time = 0.0;          // tau of the weakly reflecting pressure condition; 0: p = p_b
   bool total_pressure_inflow = false;  // p_b is the total pressure of entering fluid (above)
+  bool smooth_normal_velocity = false; // pressure condition: u_n along the plane fitted by a
+                                       // polynomial of degree 4 instead of each bin's mean (below)
   OpenBoundaryLedger ledger;
   RealArray mean_normal_velocity;      // ubar_n per bin (weakly reflecting state; empty until first use)
 

@@ -103,6 +103,7 @@ OpenBoundary read_open_boundary(const SceneNode& node, const Simulation& sim) {
     b.pressure = read_time_function(node, "pressure");
     b.reflection_time = node.non_negative_or("reflection_time", 0.0);
     b.total_pressure_inflow = node.choice_or("entering_pressure", {"static", "total"}, "static") == "total";
+    b.smooth_normal_velocity = node.choice_or("normal_velocity", {"bins", "smooth"}, "bins") == "smooth";
   }
   check_open_boundary(node, b, sim);
   node.finish();

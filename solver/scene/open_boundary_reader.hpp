@@ -8,7 +8,8 @@
 //                        is on), "plane", "width", "span": [lo, hi] (the buffer's extent along the
 //                        plane), "condition": "velocity"|"pressure", "profile": PROFILE (velocity),
 //                        "pressure": EXPR of t (pressure), "reflection_time" (pressure; 0: reflecting),
-//                        "entering_pressure": "static"|"total" (pressure: what p_b is where fluid enters)}]
+//                        "entering_pressure": "static"|"total" (pressure: what p_b is where fluid enters),
+//                        "normal_velocity": "bins"|"smooth" (pressure: the buffer's u_n per bin or fitted)}]
 #pragma once
 
 #include "boundary/inflow.hpp"
