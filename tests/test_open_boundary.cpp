@@ -25,6 +25,26 @@ Real ledger_sum(const Simulation& sim) {
   return sum;
 }
 
+// A fluid of rho0 = 1, c = 10, dp = 0.1, and an outlet at x = 1 (outward normal +x) with a buffer
+// 0.4 deep spanning 0 < y < span_upper, for the buffer's rules on hand-made particle sets.
+FluidBody unit_fluid() {
+  FluidBody fluid("fluid", 0.1, 1.3);
+  fluid.material.eos.rho0 = 1.0;
+  fluid.material.eos.c0 = 10.0;
+  return fluid;
+}
+
+OpenBoundary outlet_at_one(Real span_upper) {
+  OpenBoundary outlet;
+  outlet.axis = 0;
+  outlet.plane = 1.0;
+  outlet.side = 1;
+  outlet.width = 0.4;
+  outlet.span_lower = 0.0;
+  outlet.span_upper = span_upper;
+  return outlet;
+}
+
 }  // namespace
 
 TEST_CASE("Open boundaries: the domain's mass changes by what crosses the planes, to round-off, every step",
@@ -94,16 +114,8 @@ TEST_CASE("Open boundaries: a run restarted from a checkpoint equals the uninter
 
 TEST_CASE("Open boundaries: the exchange moves particles between buffer and domain, deletes beyond the "
           "buffer and refills at the buffer's density", "[open_boundary]") {
-  FluidBody fluid("fluid", 0.1, 1.3);
-  fluid.material.eos.rho0 = 1.0;
-  fluid.material.eos.c0 = 10.0;
-  OpenBoundary outlet;
-  outlet.axis = 0;
-  outlet.plane = 1.0;
-  outlet.side = 1;
-  outlet.width = 0.4;
-  outlet.span_lower = 0.0;
-  outlet.span_upper = 0.1;  // one bin
+  FluidBody fluid = unit_fluid();
+  const OpenBoundary outlet = outlet_at_one(0.1);  // one bin
   std::vector<OpenBoundary> boundaries{outlet};
   FluidParticles& f = fluid.particles;
   // One row at y = 0.05: domain particle moved into the buffer (x = 1.01), buffer particles at
@@ -164,16 +176,8 @@ TEST_CASE("A pressure boundary with a total entering pressure: Bernoulli's stati
   // One bin of an outlet at x = 1 (outward normal +x), p_b = 5, rho0 = 1: a domain particle in the
   // band and a buffer particle 0.1 beyond the plane, the domain's pressure p_b (slope zero).
   const auto buffer_pressure = [](Real u, bool total) {
-    FluidBody fluid("fluid", 0.1, 1.3);
-    fluid.material.eos.rho0 = 1.0;
-    fluid.material.eos.c0 = 10.0;
-    OpenBoundary outlet;
-    outlet.axis = 0;
-    outlet.plane = 1.0;
-    outlet.side = 1;
-    outlet.width = 0.4;
-    outlet.span_lower = 0.0;
-    outlet.span_upper = 0.1;
+    FluidBody fluid = unit_fluid();
+    OpenBoundary outlet = outlet_at_one(0.1);
     outlet.pressure = [](Real) { return 5.0; };
     outlet.total_pressure_inflow = total;
     std::vector<OpenBoundary> boundaries{outlet};
@@ -205,16 +209,8 @@ TEST_CASE("A pressure boundary's smoothed normal velocity holds a parabolic prof
   // An outlet at x = 1 across a channel 0 < y < 1 (ten bins of dp = 0.1): band particles in two
   // columns (x = 0.95, 0.85) at every bin centre, one buffer particle per bin at x = 1.1.
   const auto buffer_velocity = [](bool smooth, Real streak) {
-    FluidBody fluid("fluid", 0.1, 1.3);
-    fluid.material.eos.rho0 = 1.0;
-    fluid.material.eos.c0 = 10.0;
-    OpenBoundary outlet;
-    outlet.axis = 0;
-    outlet.plane = 1.0;
-    outlet.side = 1;
-    outlet.width = 0.4;
-    outlet.span_lower = 0.0;
-    outlet.span_upper = 1.0;
+    FluidBody fluid = unit_fluid();
+    OpenBoundary outlet = outlet_at_one(1.0);
     outlet.pressure = [](Real) { return 0.0; };
     outlet.smooth_normal_velocity = smooth;
     std::vector<OpenBoundary> boundaries{outlet};
