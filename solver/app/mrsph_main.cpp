@@ -58,7 +58,8 @@ void print_scene(const mrsph::LoadedScene& scene) {
                b.condition == mrsph::OpenBoundaryCondition::Velocity ? "velocity"
                : b.reflection_time > 0.0 ? fmt::format("weakly reflecting pressure (tau {:g})", b.reflection_time)
                                          : std::string("pressure"),
-               b.total_pressure_inflow ? ", total pressure where fluid enters" : "");
+               std::string(b.total_pressure_inflow ? ", total pressure where fluid enters" : "") +
+                   (b.smooth_normal_velocity ? ", normal velocity smoothed along the plane" : ""));
   for (const auto& w : sim.walls())
     fmt::print("wall       {:<12} {:>8} particles  dp {:g}  h {:g}\n", w.name, w.particles.size(), w.dp, w.h());
   for (const auto& s : sim.solids()) {
