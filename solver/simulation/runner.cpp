@@ -54,138 +54,187 @@ class SnapshotWriter {
   std::map<std::string, std::vector<PvdEntry>> collections_;
 };
 
+// One run of run_simulation, as named steps: set-up (observers, samples, checkpoints), the start
+// (fresh or resumed), the loop's stop time and what follows each advection step, the result.
+class RunLoop {
+ public:
+  RunLoop(Simulation& sim, const std::vector<ObserverSpec>& observer_specs, const RunOptions& options)
+      : sim_(sim), options_(options), samples_(options.sample_times) {
+    for (const ObserverSpec& spec : observer_specs) {
+      observers_.emplace_back(spec, sim);
+      state_.series.push_back(ObserverSeries{spec.name, observers_.back().columns(), {}, {}});
+      for (std::size_t k : observers_.back().force_contacts()) sim.fluid_contacts()[k].records_impulse = true;
+    }
+    std::sort(samples_.begin(), samples_.end());
+    if ((checkpoints() || keeps_last_good()) && !options.scene_document)
+      throw std::invalid_argument("run_simulation: checkpoints need the scene document");
+  }
+
+  void start() {
+    if (options_.resume) resume();
+    else start_fresh();
+    next_checkpoint_ = sim_.time + options_.checkpoint_interval;
+    next_wall_checkpoint_ = options_.checkpoint_wall_interval_s;
+    next_progress_ = options_.progress_interval_s;
+    if (keeps_last_good()) last_good_ = serialise();
+  }
+
+  bool finished() const { return reached(sim_.time, options_.end_time); }
+
+  // The end of the next advection step: the end time, or an output or sample time before it.
+  Real next_stop() const {
+    Real target = options_.end_time;
+    if (options_.observer_interval > 0.0) target = std::min(target, state_.next_observation);
+    if (snapshots_) target = std::min(target, state_.next_snapshot);
+    if (next_sample_ < samples_.size()) target = std::min(target, samples_[next_sample_]);
+    if (!(target > sim_.time))
+      throw std::logic_error(fmt::format("run_simulation: the next stop, t = {}, is not after the current time {}", target, sim_.time));
+    return target;
+  }
+
+  // Records, snapshots, samples and the last good state after a step; false when a stop was
+  // requested (a checkpoint is then written, if any are kept).
+  bool after_step() {
+    update_compressibility_record(sim_, state_.compressibility);
+    if (options_.observer_interval <= 0.0) {
+      record();
+    } else if (reached(sim_.time, state_.next_observation)) {
+      record();
+      while (reached(sim_.time, state_.next_observation)) state_.next_observation += options_.observer_interval;
+    }
+    if (snapshots_ && reached(sim_.time, state_.next_snapshot)) {
+      write_snapshot();
+      while (reached(sim_.time, state_.next_snapshot)) state_.next_snapshot += options_.snapshot_interval;
+    }
+    handle_samples();
+    if (keeps_last_good() && ++steps_since_last_good_ >= options_.last_good_interval) {
+      last_good_ = serialise();
+      steps_since_last_good_ = 0;
+    }
+    if (options_.stop_requested && options_.stop_requested->load()) {
+      if (checkpoints()) checkpoint();
+      result_.interrupted = true;
+      return false;
+    }
+    checkpoint_if_due();
+    report_progress();
+    return true;
+  }
+
+  void diverged(const DivergenceError& e) {
+    result_.divergence = e.info();
+    if (!keeps_last_good()) return;
+    write_checkpoint(options_.last_good_path, last_good_);
+    result_.last_good_written = options_.last_good_path;
+  }
+
+  RunResult finish(bool completed) {
+    result_.completed = completed && !result_.interrupted;
+    result_.series = std::move(state_.series);
+    result_.compressibility = state_.compressibility;
+    result_.end_time_reached = sim_.time;
+    result_.steps = sim_.steps;
+    result_.wall_s = wall_seconds();
+    result_.cpu_s = static_cast<double>(std::clock() - cpu_start_) / CLOCKS_PER_SEC;
+    return std::move(result_);
+  }
+
+ private:
+  using Clock = std::chrono::steady_clock;
+  bool checkpoints() const { return !options_.checkpoint_path.empty(); }
+  bool keeps_last_good() const { return !options_.last_good_path.empty(); }
+  double wall_seconds() const { return std::chrono::duration<double>(Clock::now() - wall_start_).count(); }
+  std::string serialise() const { return serialise_checkpoint(*options_.scene_document, options_.scene_file, sim_, state_); }
+
+  void record() {
+    for (std::size_t k = 0; k < observers_.size(); ++k) {
+      state_.series[k].time.push_back(sim_.time);
+      state_.series[k].values.push_back(observers_[k].sample(sim_));
+    }
+  }
+  void handle_samples() {
+    while (next_sample_ < samples_.size() && reached(sim_.time, samples_[next_sample_])) {
+      if (options_.on_sample) options_.on_sample(sim_);
+      ++next_sample_;
+    }
+  }
+  void write_snapshot() {
+    snapshots_->write(sim_);
+    state_.snapshot_times.push_back(sim_.time);
+  }
+  void checkpoint() {
+    write_checkpoint(options_.checkpoint_path, serialise());
+    result_.checkpoint_written = options_.checkpoint_path;
+  }
+  void checkpoint_if_due() {
+    if (!checkpoints()) return;
+    const bool by_time = options_.checkpoint_interval > 0.0 && reached(sim_.time, next_checkpoint_);
+    const bool by_wall = options_.checkpoint_wall_interval_s > 0.0 && wall_seconds() >= next_wall_checkpoint_;
+    if (!by_time && !by_wall) return;
+    checkpoint();
+    while (options_.checkpoint_interval > 0.0 && reached(sim_.time, next_checkpoint_)) next_checkpoint_ += options_.checkpoint_interval;
+    next_wall_checkpoint_ = wall_seconds() + options_.checkpoint_wall_interval_s;
+  }
+  void report_progress() {
+    if (!options_.on_progress || wall_seconds() < next_progress_) return;
+    options_.on_progress(RunProgress{sim_.time, options_.end_time, sim_.steps, wall_seconds()});
+    next_progress_ = wall_seconds() + options_.progress_interval_s;
+  }
+
+  void resume() {
+    state_ = *options_.resume;
+    while (next_sample_ < samples_.size() && samples_[next_sample_] <= sim_.time) ++next_sample_;  // already taken
+    if (options_.snapshot_interval <= 0.0) return;
+    // The checkpointed run may have written no snapshots (its next one then lies at t = 0) or
+    // written them at another interval: the next one is due within one interval from now.
+    if (reached(sim_.time, state_.next_snapshot) || state_.next_snapshot > sim_.time + options_.snapshot_interval)
+      state_.next_snapshot = sim_.time + options_.snapshot_interval;
+    snapshots_.emplace(options_.snapshot_dir, sim_, state_.snapshot_times);
+  }
+  void start_fresh() {
+    state_.next_observation = sim_.time + options_.observer_interval;
+    state_.next_snapshot = sim_.time + options_.snapshot_interval;
+    record();
+    if (options_.snapshot_interval > 0.0) {
+      snapshots_.emplace(options_.snapshot_dir, sim_, std::vector<Real>{});
+      write_snapshot();
+    }
+    handle_samples();
+    update_compressibility_record(sim_, state_.compressibility);
+  }
+
+  Simulation& sim_;
+  const RunOptions& options_;
+  const Clock::time_point wall_start_ = Clock::now();
+  const std::clock_t cpu_start_ = std::clock();
+  std::vector<PointObserver> observers_;
+  RunnerState state_;
+  RunResult result_;
+  std::vector<Real> samples_;
+  std::size_t next_sample_ = 0;
+  std::optional<SnapshotWriter> snapshots_;
+  Real next_checkpoint_ = 0.0;
+  double next_wall_checkpoint_ = 0.0, next_progress_ = 0.0;
+  std::string last_good_;
+  long long steps_since_last_good_ = 0;
+};
+
 }  // namespace
 
 RunResult run_simulation(Simulation& sim, Schedule& schedule, const std::vector<ObserverSpec>& observer_specs,
                          const RunOptions& options) {
-  using Clock = std::chrono::steady_clock;
-  const auto wall_start = Clock::now();
-  const std::clock_t cpu_start = std::clock();
-  auto wall_seconds = [&] { return std::chrono::duration<double>(Clock::now() - wall_start).count(); };
-
-  std::vector<PointObserver> observers;
-  RunResult result;
-  RunnerState state;
-  for (const ObserverSpec& spec : observer_specs) {
-    observers.emplace_back(spec, sim);
-    state.series.push_back(ObserverSeries{spec.name, observers.back().columns(), {}, {}});
-    for (std::size_t k : observers.back().force_contacts()) sim.fluid_contacts()[k].records_impulse = true;
-  }
-  auto record = [&] {
-    for (std::size_t k = 0; k < observers.size(); ++k) {
-      state.series[k].time.push_back(sim.time);
-      state.series[k].values.push_back(observers[k].sample(sim));
-    }
-  };
-
-  std::vector<Real> samples = options.sample_times;
-  std::sort(samples.begin(), samples.end());
-  std::size_t next_sample = 0;
-  auto handle_samples = [&] {
-    while (next_sample < samples.size() && reached(sim.time, samples[next_sample])) {
-      if (options.on_sample) options.on_sample(sim);
-      ++next_sample;
-    }
-  };
-
-  const bool checkpoints = !options.checkpoint_path.empty();
-  const bool keep_last_good = !options.last_good_path.empty();
-  if ((checkpoints || keep_last_good) && !options.scene_document)
-    throw std::invalid_argument("run_simulation: checkpoints need the scene document");
-  auto serialise = [&] { return serialise_checkpoint(*options.scene_document, options.scene_file, sim, state); };
-  auto checkpoint = [&] {
-    write_checkpoint(options.checkpoint_path, serialise());
-    result.checkpoint_written = options.checkpoint_path;
-  };
-
-  std::optional<SnapshotWriter> snapshots;
-  if (options.resume) {
-    state = *options.resume;
-    while (next_sample < samples.size() && samples[next_sample] <= sim.time) ++next_sample;  // already taken
-    if (options.snapshot_interval > 0.0) {
-      // The checkpointed run may have written no snapshots (its next one then lies at t = 0) or
-      // written them at another interval: the next one is due within one interval from now.
-      if (reached(sim.time, state.next_snapshot) || state.next_snapshot > sim.time + options.snapshot_interval)
-        state.next_snapshot = sim.time + options.snapshot_interval;
-      snapshots.emplace(options.snapshot_dir, sim, state.snapshot_times);
-    }
-  } else {
-    state.next_observation = sim.time + options.observer_interval;
-    state.next_snapshot = sim.time + options.snapshot_interval;
-    record();
-    if (options.snapshot_interval > 0.0) {
-      snapshots.emplace(options.snapshot_dir, sim, std::vector<Real>{});
-      snapshots->write(sim);
-      state.snapshot_times.push_back(sim.time);
-    }
-    handle_samples();
-    update_compressibility_record(sim, state.compressibility);
-  }
-  Real next_checkpoint = sim.time + options.checkpoint_interval;
-  double next_wall_checkpoint = options.checkpoint_wall_interval_s;
-  double next_progress = options.progress_interval_s;
-  std::string last_good;
-  long long steps_since_last_good = 0;
-  if (keep_last_good) last_good = serialise();
-
+  RunLoop run(sim, observer_specs, options);
+  run.start();
   try {
-    while (!reached(sim.time, options.end_time)) {
-      Real target = options.end_time;
-      if (options.observer_interval > 0.0) target = std::min(target, state.next_observation);
-      if (snapshots) target = std::min(target, state.next_snapshot);
-      if (next_sample < samples.size()) target = std::min(target, samples[next_sample]);
-      if (!(target > sim.time))
-        throw std::logic_error(fmt::format("run_simulation: the next stop, t = {}, is not after the current time {}", target, sim.time));
-      schedule.advance(sim, target - sim.time);
-      update_compressibility_record(sim, state.compressibility);
-
-      if (options.observer_interval <= 0.0) {
-        record();
-      } else if (reached(sim.time, state.next_observation)) {
-        record();
-        while (reached(sim.time, state.next_observation)) state.next_observation += options.observer_interval;
-      }
-      if (snapshots && reached(sim.time, state.next_snapshot)) {
-        snapshots->write(sim);
-        state.snapshot_times.push_back(sim.time);
-        while (reached(sim.time, state.next_snapshot)) state.next_snapshot += options.snapshot_interval;
-      }
-      handle_samples();
-      if (keep_last_good && ++steps_since_last_good >= options.last_good_interval) {
-        last_good = serialise();
-        steps_since_last_good = 0;
-      }
-      if (options.stop_requested && options.stop_requested->load()) {
-        if (checkpoints) checkpoint();
-        result.interrupted = true;
-        break;
-      }
-      if (checkpoints && ((options.checkpoint_interval > 0.0 && reached(sim.time, next_checkpoint)) ||
-                          (options.checkpoint_wall_interval_s > 0.0 && wall_seconds() >= next_wall_checkpoint))) {
-        checkpoint();
-        while (options.checkpoint_interval > 0.0 && reached(sim.time, next_checkpoint)) next_checkpoint += options.checkpoint_interval;
-        next_wall_checkpoint = wall_seconds() + options.checkpoint_wall_interval_s;
-      }
-      if (options.on_progress && wall_seconds() >= next_progress) {
-        options.on_progress(RunProgress{sim.time, options.end_time, sim.steps, wall_seconds()});
-        next_progress = wall_seconds() + options.progress_interval_s;
-      }
+    while (!run.finished()) {
+      schedule.advance(sim, run.next_stop() - sim.time);
+      if (!run.after_step()) break;
     }
-    result.completed = !result.interrupted;
+    return run.finish(true);
   } catch (const DivergenceError& e) {
-    result.divergence = e.info();
-    if (keep_last_good) {
-      write_checkpoint(options.last_good_path, last_good);
-      result.last_good_written = options.last_good_path;
-    }
+    run.diverged(e);
   }
-  result.series = std::move(state.series);
-  result.compressibility = state.compressibility;
-  result.end_time_reached = sim.time;
-  result.steps = sim.steps;
-  result.wall_s = wall_seconds();
-  result.cpu_s = static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
-  return result;
+  return run.finish(false);
 }
 
 const ObserverSeries& series_named(const std::vector<ObserverSeries>& series, const std::string& name) {
