@@ -84,6 +84,121 @@ std::string duration_text(double s) {
   return fmt::format("{:.0f} h {:02.0f} min", std::floor(s / 3600), std::fmod(s / 60, 60));
 }
 
+// What the command line asked for.
+struct CommandLine {
+  bool restarting = false, checking = false;
+  std::string scene_path, checkpoint_file;
+  std::vector<std::string> overrides;
+  std::string out_dir;
+  int threads = 0;
+  double snapshot_interval = -1.0, end_time = -1.0, max_particles = 2.0e7;
+  double checkpoint_every = 0.0, checkpoint_minutes = 0.0;
+  bool quiet = false;
+};
+
+// The scene of `run` and `check`, or the scene and state of a checkpoint for `restart`.
+mrsph::LoadedScene load_for_command(const CommandLine& cli, mrsph::RunnerState& resume_state) {
+  mrsph::SceneLimits limits;
+  limits.max_particles = cli.max_particles;
+  if (!cli.restarting) return mrsph::load_scene(cli.scene_path, cli.overrides, limits);
+  const mrsph::CheckpointHeader header = mrsph::read_checkpoint_header(cli.checkpoint_file);
+  mrsph::LoadedScene scene = mrsph::build_scene(header.scene_document, header.scene_file, limits);
+  for (const auto& spec : scene.observers)
+    resume_state.series.push_back(mrsph::ObserverSeries{spec.name, mrsph::PointObserver(spec, *scene.simulation).columns(), {}, {}});
+  mrsph::restore_checkpoint(cli.checkpoint_file, *scene.simulation, resume_state);
+  return scene;
+}
+
+// Outputs, checkpoints and the stop request of a run into `out`.
+mrsph::RunOptions run_options(const CommandLine& cli, const mrsph::LoadedScene& scene, const std::filesystem::path& out) {
+  mrsph::RunOptions options;
+  options.end_time = scene.run.end_time;
+  options.observer_interval = scene.run.observer_interval;
+  options.snapshot_interval = scene.run.snapshot_interval;
+  options.snapshot_dir = out / "snapshots";
+  options.scene_document = &scene.document;
+  options.scene_file = scene.file;
+  options.checkpoint_path = out / "checkpoint.bin";
+  options.checkpoint_interval = cli.checkpoint_every;
+  options.checkpoint_wall_interval_s = 60.0 * cli.checkpoint_minutes;
+  options.last_good_path = out / "last_good.bin";
+  options.stop_requested = &g_stop_requested;
+  return options;
+}
+
+// A progress line on stderr: rewritten in place on a terminal, a line every 10 s otherwise.
+void add_progress_line(mrsph::RunOptions& options, bool terminal, std::size_t particles) {
+  options.progress_interval_s = terminal ? 0.5 : 10.0;
+  options.on_progress = [terminal, particles](const mrsph::RunProgress& p) {
+    const double fraction = p.time / p.end_time;
+    const double eta = fraction > 0 ? p.wall_s * (1.0 - fraction) / fraction : 0.0;
+    const double updates = static_cast<double>(p.steps.acoustic) * static_cast<double>(particles) / p.wall_s;
+    fmt::print(stderr, "{}t = {:.4g} / {:g} ({:.1f}%)  steps: {} adv, {} ac, {} solid  {:.3g} particle-steps/s  ETA {}{}",
+               terminal ? "\r" : "", p.time, p.end_time, 100.0 * fraction, p.steps.advection, p.steps.acoustic,
+               p.steps.solid, updates, duration_text(eta), terminal ? "   " : "\n");
+    std::fflush(stderr);
+  };
+}
+
+// The outcome on the console and as the exit status.
+int report_result(const mrsph::RunResult& result, const std::filesystem::path& out, bool quiet) {
+  if (result.divergence) {
+    fmt::print(stderr, "error: {}\n", mrsph::DivergenceError::describe(*result.divergence));
+    fmt::print(stderr, "the last good state (<= 10 advection steps earlier) is in {}; outputs up to it in {}\n",
+               result.last_good_written.string(), out.string());
+    return kExitDiverged;
+  }
+  if (result.interrupted) {
+    fmt::print(stderr, "interrupted at t = {:g}: checkpoint {} (continue with: mrsph restart {})\n",
+               result.end_time_reached, result.checkpoint_written.string(), result.checkpoint_written.string());
+    return kExitInterrupted;
+  }
+  if (!quiet)
+    fmt::print("done: t = {:g} in {:.2f} s wall ({:.2f} s CPU), {} advection / {} acoustic / {} solid steps -> {}\n",
+               result.end_time_reached, result.wall_s, result.cpu_s, result.steps.advection, result.steps.acoustic,
+               result.steps.solid, out.string());
+  return 0;
+}
+
+// `run`, `restart` or `check`; bad input and other failures become their exit statuses.
+int execute(const CommandLine& cli, int used_threads) {
+  try {
+    mrsph::RunnerState resume_state;
+    mrsph::LoadedScene scene = load_for_command(cli, resume_state);
+    if (cli.checking) {
+      print_scene(scene);
+      fmt::print("scene is valid\n");
+      return 0;
+    }
+    if (cli.end_time > 0.0) scene.run.end_time = cli.end_time;
+    if (cli.snapshot_interval >= 0.0) scene.run.snapshot_interval = cli.snapshot_interval;
+    const std::filesystem::path out =
+        cli.out_dir.empty() ? std::filesystem::path("mrsph-out") / scene.name : std::filesystem::path(cli.out_dir);
+    std::filesystem::create_directories(out);
+    if (!cli.quiet) {
+      print_scene(scene);
+      if (cli.restarting) fmt::print("restart    from {} at t = {:g}\n", cli.checkpoint_file, scene.simulation->time);
+    }
+    mrsph::RunOptions options = run_options(cli, scene, out);
+    if (cli.restarting) options.resume = &resume_state;
+    std::signal(SIGINT, request_stop);
+    std::signal(SIGTERM, request_stop);
+    const bool terminal = ::isatty(::fileno(stderr));
+    if (!cli.quiet) add_progress_line(options, terminal, scene.simulation->particle_count());
+    const mrsph::RunResult result = mrsph::run_simulation(*scene.simulation, *scene.schedule, scene.observers, options);
+    if (!cli.quiet && terminal) fmt::print(stderr, "\n");
+    mrsph::write_observer_series(result.series, out / "observers");
+    mrsph::write_file_atomically(out / "summary.json", mrsph::run_summary_json(scene, result, used_threads).dump(2) + "\n");
+    return report_result(result, out, cli.quiet);
+  } catch (const mrsph::InputError& e) {
+    fmt::print(stderr, "error: {}\n", e.what());
+    return kExitInputError;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "error: {}\n", e.what());
+    return kExitFailure;
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -97,130 +212,37 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.set_version_flag("--version", "mrsph 0.1.0");
 
-  std::string scene_path, checkpoint_file;
-  std::vector<std::string> overrides;
-  std::string out_dir;
-  int threads = 0;
-  double snapshot_interval = -1.0, end_time = -1.0, max_particles = 2.0e7;
-  double checkpoint_every = 0.0, checkpoint_minutes = 0.0;
-  bool quiet = false;
-
+  CommandLine cli;
   auto add_scene_options = [&](CLI::App* cmd) {
-    cmd->add_option("scene", scene_path, "scene file (JSON)")->required()->check(CLI::ExistingFile);
-    cmd->add_option("--set", overrides,
+    cmd->add_option("scene", cli.scene_path, "scene file (JSON)")->required()->check(CLI::ExistingFile);
+    cmd->add_option("--set", cli.overrides,
                     "override a value before the scene is built: path=value, e.g. --set fluid.dp=0.05 "
                     "--set parameters.resolution=80 --set 'solids[0].material.youngs_modulus=500'")
         ->take_all();
-    cmd->add_option("--max-particles", max_particles, "refuse scenes needing more particles than this (default 2e7)");
+    cmd->add_option("--max-particles", cli.max_particles, "refuse scenes needing more particles than this (default 2e7)");
   };
   auto add_run_options = [&](CLI::App* cmd) {
-    cmd->add_option("--out", out_dir, "output directory (default: mrsph-out/<scene name>)");
-    cmd->add_option("--threads", threads, "worker threads (default: all cores)")->check(CLI::NonNegativeNumber);
-    cmd->add_option("--snapshots", snapshot_interval, "write VTP snapshots every this much simulated time (0: none)");
-    cmd->add_option("--end-time", end_time, "stop at this time instead of the scene's end_time");
-    cmd->add_option("--checkpoint-every", checkpoint_every,
+    cmd->add_option("--out", cli.out_dir, "output directory (default: mrsph-out/<scene name>)");
+    cmd->add_option("--threads", cli.threads, "worker threads (default: all cores)")->check(CLI::NonNegativeNumber);
+    cmd->add_option("--snapshots", cli.snapshot_interval, "write VTP snapshots every this much simulated time (0: none)");
+    cmd->add_option("--end-time", cli.end_time, "stop at this time instead of the scene's end_time");
+    cmd->add_option("--checkpoint-every", cli.checkpoint_every,
                     "write OUT/checkpoint.bin every this much simulated time (0: only when interrupted)");
-    cmd->add_option("--checkpoint-minutes", checkpoint_minutes, "write OUT/checkpoint.bin every this many wall-clock minutes");
-    cmd->add_flag("--quiet", quiet, "no progress line");
+    cmd->add_option("--checkpoint-minutes", cli.checkpoint_minutes, "write OUT/checkpoint.bin every this many wall-clock minutes");
+    cmd->add_flag("--quiet", cli.quiet, "no progress line");
   };
   CLI::App* run = app.add_subcommand("run", "run a scene to its end time");
   add_scene_options(run);
   add_run_options(run);
   CLI::App* restart = app.add_subcommand("restart", "continue a run from a checkpoint (same results as not stopping)");
-  restart->add_option("checkpoint", checkpoint_file, "checkpoint file written by mrsph run")->required()->check(CLI::ExistingFile);
+  restart->add_option("checkpoint", cli.checkpoint_file, "checkpoint file written by mrsph run")->required()->check(CLI::ExistingFile);
   add_run_options(restart);
   CLI::App* check = app.add_subcommand("check", "load a scene, validate it and print its bodies, without running");
   add_scene_options(check);
 
   CLI11_PARSE(app, argc, argv);
-
-  const int used_threads = threads > 0 ? threads : tbb::info::default_concurrency();
-  return mrsph::run_with_threads(used_threads, [&]() -> int {
-  try {
-    mrsph::SceneLimits limits;
-    limits.max_particles = max_particles;
-    mrsph::LoadedScene scene;
-    mrsph::RunnerState resume_state;
-    const bool restarting = restart->parsed();
-    if (restarting) {
-      const mrsph::CheckpointHeader header = mrsph::read_checkpoint_header(checkpoint_file);
-      scene = mrsph::build_scene(header.scene_document, header.scene_file, limits);
-      for (const auto& spec : scene.observers)
-        resume_state.series.push_back(mrsph::ObserverSeries{spec.name, mrsph::PointObserver(spec, *scene.simulation).columns(), {}, {}});
-      mrsph::restore_checkpoint(checkpoint_file, *scene.simulation, resume_state);
-    } else {
-      scene = mrsph::load_scene(scene_path, overrides, limits);
-    }
-    if (check->parsed()) {
-      print_scene(scene);
-      fmt::print("scene is valid\n");
-      return 0;
-    }
-    if (end_time > 0.0) scene.run.end_time = end_time;
-    if (snapshot_interval >= 0.0) scene.run.snapshot_interval = snapshot_interval;
-    const std::filesystem::path out = out_dir.empty() ? std::filesystem::path("mrsph-out") / scene.name : std::filesystem::path(out_dir);
-    std::filesystem::create_directories(out);
-    if (!quiet) {
-      print_scene(scene);
-      if (restarting) fmt::print("restart    from {} at t = {:g}\n", checkpoint_file, scene.simulation->time);
-    }
-
-    mrsph::RunOptions options;
-    options.end_time = scene.run.end_time;
-    options.observer_interval = scene.run.observer_interval;
-    options.snapshot_interval = scene.run.snapshot_interval;
-    options.snapshot_dir = out / "snapshots";
-    options.scene_document = &scene.document;
-    options.scene_file = scene.file;
-    options.checkpoint_path = out / "checkpoint.bin";
-    options.checkpoint_interval = checkpoint_every;
-    options.checkpoint_wall_interval_s = 60.0 * checkpoint_minutes;
-    options.last_good_path = out / "last_good.bin";
-    options.stop_requested = &g_stop_requested;
-    if (restarting) options.resume = &resume_state;
-    std::signal(SIGINT, request_stop);
-    std::signal(SIGTERM, request_stop);
-    const bool terminal = ::isatty(::fileno(stderr));
-    const std::size_t particles = scene.simulation->particle_count();
-    if (!quiet) {
-      options.progress_interval_s = terminal ? 0.5 : 10.0;
-      options.on_progress = [&, terminal](const mrsph::RunProgress& p) {
-        const double fraction = p.time / p.end_time;
-        const double eta = fraction > 0 ? p.wall_s * (1.0 - fraction) / fraction : 0.0;
-        const double updates = static_cast<double>(p.steps.acoustic) * static_cast<double>(particles) / p.wall_s;
-        fmt::print(stderr, "{}t = {:.4g} / {:g} ({:.1f}%)  steps: {} adv, {} ac, {} solid  {:.3g} particle-steps/s  ETA {}{}",
-                   terminal ? "\r" : "", p.time, p.end_time, 100.0 * fraction, p.steps.advection, p.steps.acoustic,
-                   p.steps.solid, updates, duration_text(eta), terminal ? "   " : "\n");
-        std::fflush(stderr);
-      };
-    }
-    const mrsph::RunResult result = mrsph::run_simulation(*scene.simulation, *scene.schedule, scene.observers, options);
-    if (!quiet && terminal) fmt::print(stderr, "\n");
-
-    mrsph::write_observer_series(result.series, out / "observers");
-    mrsph::write_file_atomically(out / "summary.json", mrsph::run_summary_json(scene, result, used_threads).dump(2) + "\n");
-    if (result.divergence) {
-      fmt::print(stderr, "error: {}\n", mrsph::DivergenceError::describe(*result.divergence));
-      fmt::print(stderr, "the last good state (<= 10 advection steps earlier) is in {}; outputs up to it in {}\n",
-                 result.last_good_written.string(), out.string());
-      return kExitDiverged;
-    }
-    if (result.interrupted) {
-      fmt::print(stderr, "interrupted at t = {:g}: checkpoint {} (continue with: mrsph restart {})\n",
-                 result.end_time_reached, result.checkpoint_written.string(), result.checkpoint_written.string());
-      return kExitInterrupted;
-    }
-    if (!quiet)
-      fmt::print("done: t = {:g} in {:.2f} s wall ({:.2f} s CPU), {} advection / {} acoustic / {} solid steps -> {}\n",
-                 result.end_time_reached, result.wall_s, result.cpu_s, result.steps.advection, result.steps.acoustic,
-                 result.steps.solid, out.string());
-    return 0;
-  } catch (const mrsph::InputError& e) {
-    fmt::print(stderr, "error: {}\n", e.what());
-    return kExitInputError;
-  } catch (const std::exception& e) {
-    fmt::print(stderr, "error: {}\n", e.what());
-    return kExitFailure;
-  }
-  });
+  cli.restarting = restart->parsed();
+  cli.checking = check->parsed();
+  const int used_threads = cli.threads > 0 ? cli.threads : tbb::info::default_concurrency();
+  return mrsph::run_with_threads(used_threads, [&]() -> int { return execute(cli, used_threads); });
 }
