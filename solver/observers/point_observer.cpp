@@ -12,74 +12,84 @@ namespace mrsph {
 
 PointObserver::PointObserver(ObserverSpec spec, const Simulation& sim) : spec_(std::move(spec)) {
   if (spec_.bodies.empty()) throw std::invalid_argument("observer '" + spec_.name + "' names no body");
-  if (spec_.quantity == ObservedQuantity::Force) {
-    target_ = Target::Boundaries;
-    if (!sim.has_fluid()) throw std::invalid_argument("observer '" + spec_.name + "': force needs a fluid");
-    for (const std::string& body : spec_.bodies) {
-      std::size_t k = 0;
-      for (; k < sim.fluid_contacts().size(); ++k)
-        if (sim.fluid_contacts()[k].boundary_name == body) break;
-      if (k == sim.fluid_contacts().size())
-        throw std::invalid_argument("observer '" + spec_.name + "': no wall or solid body named '" + body + "'");
-      contact_indices_.push_back(k);
-    }
-    return;
-  }
-  if (spec_.quantity == ObservedQuantity::Gap) {
-    target_ = Target::SolidPair;
-    if (spec_.bodies.size() != 2) throw std::invalid_argument("observer '" + spec_.name + "': a gap is between two solid bodies");
-    const auto solid_named = [&](const std::string& body) {
-      if (const auto index = sim.solid_index(body)) return *index;
-      throw std::invalid_argument("observer '" + spec_.name + "': no solid body named '" + body + "'");
-    };
-    solid_index_ = solid_named(spec_.bodies[0]);
-    other_solid_index_ = solid_named(spec_.bodies[1]);
-    return;
-  }
   const std::string& body = spec_.bodies.front();
-  if (sim.has_fluid() && sim.fluid().name == body) {
-    target_ = Target::Fluid;
-    if (spec_.quantity != ObservedQuantity::Velocity && spec_.quantity != ObservedQuantity::Pressure &&
-        spec_.quantity != ObservedQuantity::Front)
-      throw std::invalid_argument("observer '" + spec_.name + "': a fluid body is observed as velocity, pressure or front");
-    if (spec_.quantity == ObservedQuantity::Front) {
-      if (!(spec_.direction.norm() > 0.0)) throw std::invalid_argument("observer '" + spec_.name + "': zero front direction");
-      spec_.direction.normalize();
-    }
-    return;
-  }
-  if (const std::optional<std::size_t> s = sim.solid_index(body)) {
-    target_ = Target::Solid;
+  if (spec_.quantity == ObservedQuantity::Force) {
+    observe_forces(sim);
+  } else if (spec_.quantity == ObservedQuantity::Gap) {
+    observe_gap(sim);
+  } else if (sim.has_fluid() && sim.fluid().name == body) {
+    observe_fluid();
+  } else if (const std::optional<std::size_t> s = sim.solid_index(body)) {
     solid_index_ = *s;
-    if (spec_.quantity == ObservedQuantity::Pressure || spec_.quantity == ObservedQuantity::Front)
-      throw std::invalid_argument("observer '" + spec_.name + "': a solid is observed as position, displacement or velocity");
-    const SolidBody& solid = sim.solids()[*s];
-    const SolidParticles& p = solid.particles;
-    if (spec_.nearest_particle) {
-      Real best = std::numeric_limits<Real>::infinity();
-      Index best_index = 0;
-      for (std::size_t a = 0; a < p.size(); ++a) {
-        const Real d = (p.pos0[a] - spec_.point).squaredNorm();
-        if (d < best) { best = d; best_index = static_cast<Index>(a); }
-      }
-      particles_ = {best_index};
-      weights_ = {1.0};
-    } else {
-      Real total = 0.0;
-      for (std::size_t a = 0; a < p.size(); ++a) {
-        const Real w = solid.kernel.W((p.pos0[a] - spec_.point).norm()) * p.vol0[a];
-        if (w <= 0.0) continue;
-        particles_.push_back(static_cast<Index>(a));
-        weights_.push_back(w);
-        total += w;
-      }
-      if (particles_.empty())
-        throw std::invalid_argument("observer '" + spec_.name + "': no particle of '" + body + "' within reach of the point");
-      for (Real& w : weights_) w /= total;
+    observe_solid(sim.solids()[*s]);
+  } else {
+    throw std::invalid_argument("observer '" + spec_.name + "': no fluid or solid body named '" + body + "'");
+  }
+}
+
+void PointObserver::observe_forces(const Simulation& sim) {
+  target_ = Target::Boundaries;
+  if (!sim.has_fluid()) throw std::invalid_argument("observer '" + spec_.name + "': force needs a fluid");
+  for (const std::string& body : spec_.bodies) {
+    std::size_t k = 0;
+    for (; k < sim.fluid_contacts().size(); ++k)
+      if (sim.fluid_contacts()[k].boundary_name == body) break;
+    if (k == sim.fluid_contacts().size())
+      throw std::invalid_argument("observer '" + spec_.name + "': no wall or solid body named '" + body + "'");
+    contact_indices_.push_back(k);
+  }
+}
+
+void PointObserver::observe_gap(const Simulation& sim) {
+  target_ = Target::SolidPair;
+  if (spec_.bodies.size() != 2) throw std::invalid_argument("observer '" + spec_.name + "': a gap is between two solid bodies");
+  const auto solid_named = [&](const std::string& body) {
+    if (const auto index = sim.solid_index(body)) return *index;
+    throw std::invalid_argument("observer '" + spec_.name + "': no solid body named '" + body + "'");
+  };
+  solid_index_ = solid_named(spec_.bodies[0]);
+  other_solid_index_ = solid_named(spec_.bodies[1]);
+}
+
+void PointObserver::observe_fluid() {
+  target_ = Target::Fluid;
+  if (spec_.quantity != ObservedQuantity::Velocity && spec_.quantity != ObservedQuantity::Pressure &&
+      spec_.quantity != ObservedQuantity::Front)
+    throw std::invalid_argument("observer '" + spec_.name + "': a fluid body is observed as velocity, pressure or front");
+  if (spec_.quantity == ObservedQuantity::Front) {
+    if (!(spec_.direction.norm() > 0.0)) throw std::invalid_argument("observer '" + spec_.name + "': zero front direction");
+    spec_.direction.normalize();
+  }
+}
+
+// The solid's particle nearest the point, or its particles within reach weighted by W V0 (normalised).
+void PointObserver::observe_solid(const SolidBody& solid) {
+  target_ = Target::Solid;
+  if (spec_.quantity == ObservedQuantity::Pressure || spec_.quantity == ObservedQuantity::Front)
+    throw std::invalid_argument("observer '" + spec_.name + "': a solid is observed as position, displacement or velocity");
+  const SolidParticles& p = solid.particles;
+  if (spec_.nearest_particle) {
+    Real best = std::numeric_limits<Real>::infinity();
+    Index best_index = 0;
+    for (std::size_t a = 0; a < p.size(); ++a) {
+      const Real d = (p.pos0[a] - spec_.point).squaredNorm();
+      if (d < best) { best = d; best_index = static_cast<Index>(a); }
     }
+    particles_ = {best_index};
+    weights_ = {1.0};
     return;
   }
-  throw std::invalid_argument("observer '" + spec_.name + "': no fluid or solid body named '" + body + "'");
+  Real total = 0.0;
+  for (std::size_t a = 0; a < p.size(); ++a) {
+    const Real w = solid.kernel.W((p.pos0[a] - spec_.point).norm()) * p.vol0[a];
+    if (w <= 0.0) continue;
+    particles_.push_back(static_cast<Index>(a));
+    weights_.push_back(w);
+    total += w;
+  }
+  if (particles_.empty())
+    throw std::invalid_argument("observer '" + spec_.name + "': no particle of '" + spec_.bodies.front() + "' within reach of the point");
+  for (Real& w : weights_) w /= total;
 }
 
 std::vector<std::string> PointObserver::columns() const {

@@ -46,6 +46,11 @@ class PointObserver {
 
  private:
   enum class Target { Fluid, Solid, Boundaries, SolidPair };
+  // The constructor's cases, by what is observed.
+  void observe_forces(const Simulation& sim);
+  void observe_gap(const Simulation& sim);
+  void observe_fluid();
+  void observe_solid(const SolidBody& solid);
   ObserverSpec spec_;
   Target target_ = Target::Fluid;
   std::size_t solid_index_ = 0;
