@@ -22,64 +22,49 @@ using Mat5 = Eigen::Matrix<Real, 5, 5>;
 // (M^T M + eps I)^-1 M^T, as the paper's code inverts B.
 Mat2 regularised_inverse(const Mat2& M) { return (M.transpose() * M + 1e-8 * Mat2::Identity()).inverse() * M.transpose(); }
 
-}  // namespace
+// The pair's kernel factor phi_ab = V0_b (-dW/dr) / r.
+Real pair_factor(const RealArray& vol0, const Neighbor& nb) { return vol0[nb.j] * (-nb.dW) / nb.r; }
 
-GradientWeights compute_gradient_weights(const NeighborList& reference, const RealArray& vol0, Real h,
-                                         GradientCorrection correction) {
-  const std::size_t n = reference.size();
-  GradientWeights g;
-  g.neighbor.resize(reference.pair_count());
-  for (std::size_t k = 0; k < reference.pair_count(); ++k) g.neighbor[k] = reference.entry(k).j;
-  g.w.assign(reference.pair_count(), Vec2::Zero());
-  g.w_reverse.assign(reference.pair_count(), Vec2::Zero());
-  g.w_sum.assign(n, Vec2::Zero());
-  g.B.assign(n, Mat2::Identity());
-  std::vector<std::uint8_t> second(n, 0);
+// The quadratic basis of d = r0_b - r0_a scaled by h (so that the moment matrix is well-conditioned).
+Vec5 quadratic_basis(const Neighbor& nb, Real h) {
+  const Vec2 d = -nb.r * nb.e / h;
+  Vec5 p;
+  p << d.x(), d.y(), 0.5 * d.x() * d.x(), d.x() * d.y(), 0.5 * d.y() * d.y();
+  return p;
+}
 
-  parallel_for_each(n, [&](std::size_t a) {
-    const auto list = reference.of(a);
-    const Index first = reference.offset(a);
-    // Linear (the paper's B0): M = sum_b phi_ab d d^T, d = r0_b - r0_a = -r e.
-    Mat2 M = Mat2::Zero();
-    for (const Neighbor& nb : list) {
-      const Real phi = vol0[nb.j] * (-nb.dW) / nb.r;
-      const Vec2 d = -nb.r * nb.e;
-      M += phi * d * d.transpose();
-    }
-    g.B[a] = regularised_inverse(M);
-    for (std::size_t k = 0; k < list.size(); ++k) {
-      const Neighbor& nb = list[k];
-      g.w[first + k] = (vol0[nb.j] * (-nb.dW) / nb.r) * (g.B[a] * (-nb.r * nb.e));
-    }
-    if (correction != GradientCorrection::SecondOrder) return;
+// Linear (the paper's B0): M = sum_b phi_ab d d^T, d = r0_b - r0_a = -r e; w_ab = phi_ab B d.
+void linear_weights(std::span<const Neighbor> list, const RealArray& vol0, Mat2& B, Vec2* w) {
+  Mat2 M = Mat2::Zero();
+  for (const Neighbor& nb : list) {
+    const Vec2 d = -nb.r * nb.e;
+    M += pair_factor(vol0, nb) * d * d.transpose();
+  }
+  B = regularised_inverse(M);
+  for (std::size_t k = 0; k < list.size(); ++k) w[k] = pair_factor(vol0, list[k]) * (B * (-list[k].r * list[k].e));
+}
 
-    // Quadratic basis, lengths scaled by h so the moment matrix is well-conditioned.
-    Mat5 M5 = Mat5::Zero();
-    for (const Neighbor& nb : list) {
-      const Real phi = vol0[nb.j] * (-nb.dW) / nb.r;
-      const Vec2 d = -nb.r * nb.e / h;
-      Vec5 p;
-      p << d.x(), d.y(), 0.5 * d.x() * d.x(), d.x() * d.y(), 0.5 * d.y() * d.y();
-      M5 += phi * p * p.transpose();
-    }
-    const Eigen::FullPivLU<Mat5> lu(M5);
-    // A particle whose neighbours do not determine a quadratic keeps the linear weights.
-    if (!lu.isInvertible() || lu.rcond() < 1e-6) return;
-    const Mat5 inverse = lu.inverse();
-    for (std::size_t k = 0; k < list.size(); ++k) {
-      const Neighbor& nb = list[k];
-      const Real phi = vol0[nb.j] * (-nb.dW) / nb.r;
-      const Vec2 d = -nb.r * nb.e / h;
-      Vec5 p;
-      p << d.x(), d.y(), 0.5 * d.x() * d.x(), d.x() * d.y(), 0.5 * d.y() * d.y();
-      const Vec5 c = inverse * p;
-      g.w[first + k] = (phi / h) * Vec2(c(0), c(1));
-    }
-    second[a] = 1;
-  });
+// Exact for quadratic fields: the first two rows of the 5 x 5 moment matrix's inverse. False (weights
+// untouched) where the neighbours do not determine a quadratic.
+bool quadratic_weights(std::span<const Neighbor> list, const RealArray& vol0, Real h, Vec2* w) {
+  Mat5 M5 = Mat5::Zero();
+  for (const Neighbor& nb : list) {
+    const Vec5 p = quadratic_basis(nb, h);
+    M5 += pair_factor(vol0, nb) * p * p.transpose();
+  }
+  const Eigen::FullPivLU<Mat5> lu(M5);
+  if (!lu.isInvertible() || lu.rcond() < 1e-6) return false;
+  const Mat5 inverse = lu.inverse();
+  for (std::size_t k = 0; k < list.size(); ++k) {
+    const Vec5 c = inverse * quadratic_basis(list[k], h);
+    w[k] = (pair_factor(vol0, list[k]) / h) * Vec2(c(0), c(1));
+  }
+  return true;
+}
 
-  // Reverse weights: entry (a, b) gets w_ba from b's list (the reference list is symmetric).
-  parallel_for_each(n, [&](std::size_t a) {
+// Reverse weights: entry (a, b) gets w_ba from b's list (the reference list is symmetric); and w_sum.
+void reverse_weights(const NeighborList& reference, GradientWeights& g) {
+  parallel_for_each(reference.size(), [&](std::size_t a) {
     const auto list = reference.of(a);
     const Index first = reference.offset(a);
     Vec2 sum = Vec2::Zero();
@@ -95,6 +80,27 @@ GradientWeights compute_gradient_weights(const NeighborList& reference, const Re
     }
     g.w_sum[a] = sum;
   });
+}
+
+}  // namespace
+
+GradientWeights compute_gradient_weights(const NeighborList& reference, const RealArray& vol0, Real h,
+                                         GradientCorrection correction) {
+  const std::size_t n = reference.size();
+  GradientWeights g;
+  g.neighbor.resize(reference.pair_count());
+  for (std::size_t k = 0; k < reference.pair_count(); ++k) g.neighbor[k] = reference.entry(k).j;
+  g.w.assign(reference.pair_count(), Vec2::Zero());
+  g.w_reverse.assign(reference.pair_count(), Vec2::Zero());
+  g.w_sum.assign(n, Vec2::Zero());
+  g.B.assign(n, Mat2::Identity());
+  std::vector<std::uint8_t> second(n, 0);
+  parallel_for_each(n, [&](std::size_t a) {
+    Vec2* w = g.w.data() + reference.offset(a);
+    linear_weights(reference.of(a), vol0, g.B[a], w);
+    if (correction == GradientCorrection::SecondOrder) second[a] = quadratic_weights(reference.of(a), vol0, h, w) ? 1 : 0;
+  });
+  reverse_weights(reference, g);
   for (auto s : second) g.second_order_count += s;
   return g;
 }
