@@ -40,15 +40,20 @@ struct BandMeans {
   Real slope_through(Real p_plane) const { return n < 1 ? 0.0 : (sum_dp - p_plane * sum_d) / sum_dd; }
 };
 
+// A domain particle within one kernel support inside the plane: the band the buffer reads.
+bool in_band(const FluidBody& fluid, const OpenBoundary& b, std::size_t i) {
+  if (!fluid.particles.in_domain(i)) return false;
+  const Real d = b.depth(fluid.particles.pos[i]);
+  return d <= 0.0 && d > -fluid.kernel.cutoff();
+}
+
 BandMeans domain_band_means(const FluidBody& fluid, const OpenBoundary& b, const PlaneBins& bins) {
   const FluidParticles& f = fluid.particles;
-  const Real band = fluid.kernel.cutoff();
   BandMeans m{Vec2Array(bins.count, Vec2::Zero()), RealArray(bins.count, 0.0), RealArray(bins.count, 0.0)};
   std::vector<int> count(bins.count, 0);
   for (std::size_t i = 0; i < f.size(); ++i) {  // in particle order: bitwise reproducible
-    if (!f.in_domain(i)) continue;
+    if (!in_band(fluid, b, i)) continue;
     const Real d = b.depth(f.pos[i]);
-    if (d > 0.0 || d <= -band) continue;
     const std::size_t k = bins.of(f.pos[i]);
     m.vel[k] += f.vel[i];
     m.p[k] += f.p[i];
@@ -100,14 +105,11 @@ RealArray smoothed_normal_velocity(const FluidBody& fluid, const OpenBoundary& b
     return p;
   };
   const FluidParticles& f = fluid.particles;
-  const Real band = fluid.kernel.cutoff();
   Eigen::Matrix<Real, kTerms, kTerms> normal_matrix = Eigen::Matrix<Real, kTerms, kTerms>::Zero();
   Basis rhs = Basis::Zero();
   int count = 0;
   for (std::size_t i = 0; i < f.size(); ++i) {  // in particle order: bitwise reproducible
-    if (!f.in_domain(i)) continue;
-    const Real d = b.depth(f.pos[i]);
-    if (d > 0.0 || d <= -band) continue;
+    if (!in_band(fluid, b, i)) continue;
     const Basis p = basis(f.pos[i][bins.tangent]);
     normal_matrix += p * p.transpose();
     rhs += p * f.vel[i].dot(b.normal());
