@@ -20,7 +20,7 @@ struct PlaneBins {
   PlaneBins(const OpenBoundary& b, Real dp)
       : tangent(1 - b.axis), lower(b.span_lower), width(dp),
         count(std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil((b.span_upper - b.span_lower) / dp)))) {}
-  std::size_t of(const Vec2& p) const {
+  std::size_t index_of(const Vec2& p) const {
     const Real k = std::floor((p[tangent] - lower) / width);
     return static_cast<std::size_t>(std::clamp<Real>(k, 0.0, static_cast<Real>(count - 1)));
   }
@@ -54,7 +54,7 @@ BandMeans domain_band_means(const FluidBody& fluid, const OpenBoundary& b, const
   for (std::size_t i = 0; i < f.size(); ++i) {  // in particle order: bitwise reproducible
     if (!in_band(fluid, b, i)) continue;
     const Real d = b.depth(f.pos[i]);
-    const std::size_t k = bins.of(f.pos[i]);
+    const std::size_t k = bins.index_of(f.pos[i]);
     m.vel[k] += f.vel[i];
     m.p[k] += f.p[i];
     m.depth[k] += d;
@@ -155,7 +155,7 @@ void refill_buffer(FluidBody& fluid, OpenBoundary& b, std::size_t k, const std::
   const std::uint8_t zone = zone_of(k);
   for (std::size_t i = 0; i < removed.size(); ++i) {
     if (f.zone[i] != zone || removed[i]) continue;
-    std::size_t& o = outermost[bins.of(f.pos[i])];
+    std::size_t& o = outermost[bins.index_of(f.pos[i])];
     if (o == f.size() || b.depth(f.pos[i]) > b.depth(f.pos[o])) o = i;
   }
   for (std::size_t bin = 0; bin < bins.count; ++bin) {
@@ -248,7 +248,7 @@ void impose_buffer_states(FluidBody& fluid, std::vector<OpenBoundary>& boundarie
     const std::uint8_t zone = zone_of(k);
     parallel_for_each(f.size(), [&](std::size_t i) {
       if (f.zone[i] != zone) return;
-      const std::size_t bin = bins.of(f.pos[i]);
+      const std::size_t bin = bins.index_of(f.pos[i]);
       const Real depth = b.depth(f.pos[i]);
       if (b.condition == OpenBoundaryCondition::Velocity) {
         f.vel[i] = inflow_velocity(b.velocity, f.pos[i], t);

@@ -2,6 +2,8 @@
 
 #include "core/parallel.hpp"
 #include "fluid/density_diffusion.hpp"
+#include "fluid/wall_rules.hpp"
+#include "interaction/pair_sweep.hpp"
 
 #include <algorithm>
 
@@ -33,50 +35,126 @@ void advance_position(FluidBody& fluid, Real dt) {
   parallel_for_each(f.size(), [&](std::size_t i) { f.pos[i] += dt * f.vel[i]; }, kGrainSimpleLoop);
 }
 
-void compute_pressure_interaction(FluidBody& fluid, const NeighborList& inner, std::vector<FluidContact>& contacts,
-                                  const Vec2& body_acceleration, Real kick_dt) {
-  FluidParticles& f = fluid.particles;
-  const RiemannDissipation& riemann = fluid.riemann;
-  for (FluidContact& c : contacts) c.pair_pressure_force.resize(c.pairs.pair_count());
-  const Real scale = fluid.options.pressure_lattice_correction ? 1.0 / fluid.lattice_gradient : 1.0;
-  const Real delta = fluid.options.delta_sph;
-  const Real diffusion_scale = delta * fluid.h() * fluid.material.sound_speed();
-  compute_renormalised_density_gradient(fluid, inner);
+namespace {
 
-  parallel_for_each(f.size(), [&](std::size_t i) {
-    const Real p_i = f.p[i], rho_i = f.rho[i], vol_i = f.vol[i];
-    const Real p_i_relative = p_i - 2.0 * fluid.reference_pressure;  // p_i + p_j - 2 p_ref
-    const Real vol_i_scaled = scale * vol_i;
+// f^p_i (Eqs. 28, 21, 30) and the density rate's pressure-difference part (the Riemann term, or the
+// delta-SPH diffusion D_i of density_diffusion.hpp); then, with kick_dt != 0, the kick.
+struct PressureInteraction {
+  struct Sum {
+    Real p_relative;      // p_i - 2 p_ref: the pair forces use p_i + p_j - 2 p_ref
+    Real vol_scaled;      // V_i, divided by M1 with the pressure lattice correction
+    Vec2 acc_prior;       // F^prior_i / m_i + g: the wall pressure's acceleration
     Vec2 force = Vec2::Zero();
     Real drho = 0.0, diffusion = 0.0;
-    for (const Neighbor& n : inner.of(i)) {
-      force -= (vol_i_scaled * f.vol[n.j] * (p_i_relative + f.p[n.j]) * n.dW) * n.e;
-      if (riemann.continuity) drho += f.vol[n.j] * riemann.continuity_term(p_i, f.p[n.j]) * n.dW;
-      if (delta != 0.0)
-        diffusion += density_diffusion_pair(rho_i, f.rho[n.j], fluid.density_gradient[i], fluid.density_gradient[n.j],
+  };
+  struct Side {
+    const RealArray& vol;
+    const Vec2Array& abar;
+    Vec2Array& pair_force;
+  };
+
+  FluidBody& fluid;
+  FluidParticles& f;
+  std::vector<FluidContact>& contacts;
+  const Vec2& body_acceleration;
+  Real kick_dt;
+  Real scale = fluid.options.pressure_lattice_correction ? 1.0 / fluid.lattice_gradient : 1.0;
+  Real delta = fluid.options.delta_sph;
+  Real diffusion_scale = delta * fluid.h() * fluid.material.sound_speed();
+
+  Sum begin(std::size_t i) const {
+    return {f.p[i] - 2.0 * fluid.reference_pressure, scale * f.vol[i], f.force_prior[i] / f.mass[i] + body_acceleration};
+  }
+
+  void inner(Sum& s, std::size_t i, const Neighbor& n) const {
+    s.force -= (s.vol_scaled * f.vol[n.j] * (s.p_relative + f.p[n.j]) * n.dW) * n.e;
+    if (fluid.riemann.continuity) s.drho += f.vol[n.j] * fluid.riemann.continuity_term(f.p[i], f.p[n.j]) * n.dW;
+    if (delta != 0.0)
+      s.diffusion += density_diffusion_pair(f.rho[i], f.rho[n.j], fluid.density_gradient[i], fluid.density_gradient[n.j],
                                             f.vol[n.j], n);
-    }
-    const Vec2 acc_prior = f.force_prior[i] / f.mass[i] + body_acceleration;
-    for (FluidContact& c : contacts) {
-      const RealArray& vol = *c.boundary.vol;
-      const Vec2Array& abar = *c.boundary.acc_ave;
-      const Index first = c.pairs.offset(i);
-      const auto list = c.pairs.of(i);
-      for (std::size_t k = 0; k < list.size(); ++k) {
-        const Neighbor& n = list[k];
-        const Vec2 r_ai = -n.r * n.e;  // r_a - r_i
-        const Real p_d = p_i + rho_i * std::max(Real(0), (acc_prior - abar[n.j]).dot(r_ai));
-        const Vec2 pair = -(vol_i_scaled * vol[n.j] * (p_i_relative + p_d) * n.dW) * n.e;
-        c.pair_pressure_force[first + k] = pair;
-        force += pair;
-        if (riemann.continuity) drho += vol[n.j] * riemann.continuity_term(p_i, p_d) * n.dW;
-      }
-    }
-    f.pressure_force[i] = force;
-    f.drho_dt[i] = rho_i * drho + diffusion_scale * diffusion;
+  }
+
+  Side boundary(std::size_t c) const {
+    return {*contacts[c].boundary.vol, *contacts[c].boundary.acc_ave, contacts[c].pair_pressure_force};
+  }
+
+  void contact(Sum& s, std::size_t i, const Side& b, Index k, const Neighbor& n) const {
+    const Real p_d = wall_pressure(f.p[i], f.rho[i], s.acc_prior, b.abar[n.j], -n.r * n.e);
+    const Vec2 pair = -(s.vol_scaled * b.vol[n.j] * (s.p_relative + p_d) * n.dW) * n.e;
+    b.pair_force[k] = pair;
+    s.force += pair;
+    if (fluid.riemann.continuity) s.drho += b.vol[n.j] * fluid.riemann.continuity_term(f.p[i], p_d) * n.dW;
+  }
+
+  void finish(std::size_t i, const Sum& s) const {
+    f.pressure_force[i] = s.force;
+    f.drho_dt[i] = f.rho[i] * s.drho + diffusion_scale * s.diffusion;
     // No particle reads another's velocity here: the kick can follow particle by particle.
     if (kick_dt != 0.0) kick_particle(f, i, kick_dt, body_acceleration);
-  });
+  }
+};
+
+// drho/dt += rho_i div v (Eq. 27 and its wall term); f^d (the Riemann momentum dissipation). Before,
+// where non-zero: r += position_dt v; after: rho += density_dt drho/dt (no particle reads another's
+// position or density here).
+struct DivergenceAndDissipation {
+  struct Sum {
+    Real divergence = 0.0;
+    Vec2 dissipation = Vec2::Zero();
+  };
+  struct Side {
+    const RealArray& vol;
+    const Vec2Array& vbar;
+    const Vec2Array& normal;
+    Vec2Array& pair_force;
+  };
+
+  FluidParticles& f;
+  const RiemannDissipation& riemann;
+  std::vector<FluidContact>& contacts;
+  Real position_dt, density_dt;
+
+  Sum begin(std::size_t i) const {
+    if (position_dt != 0.0) f.pos[i] += position_dt * f.vel[i];
+    return {};
+  }
+
+  void inner(Sum& s, std::size_t i, const Neighbor& n) const {
+    const Real u = (f.vel[i] - f.vel[n.j]).dot(n.e);
+    s.divergence += f.vol[n.j] * u * n.dW;
+    if (riemann.momentum) s.dissipation += (f.vol[i] * f.vol[n.j] * riemann.momentum_coefficient(u) * n.dW) * n.e;
+  }
+
+  Side boundary(std::size_t c) const {
+    const FluidContact& contact = contacts[c];
+    return {*contact.boundary.vol, *contact.boundary.vel_ave, *contact.boundary.normal, contacts[c].pair_dissipation_force};
+  }
+
+  void contact(Sum& s, std::size_t i, const Side& b, Index k, const Neighbor& n) const {
+    const Vec2 difference = wall_velocity_difference(f.vel[i], b.vbar[n.j]);
+    s.divergence += b.vol[n.j] * difference.dot(n.e) * n.dW;
+    if (!riemann.momentum) return;
+    const Vec2 n_f = wall_normal_towards_fluid(n.e, b.normal[n.j]);
+    const Real u = difference.dot(n_f);
+    const Vec2 pair = (f.vol[i] * b.vol[n.j] * riemann.momentum_coefficient(u) * n.dW) * n_f;
+    b.pair_force[k] = pair;
+    s.dissipation += pair;
+  }
+
+  void finish(std::size_t i, const Sum& s) const {
+    f.drho_dt[i] += f.rho[i] * s.divergence;
+    f.dissipation_force[i] = s.dissipation;
+    if (density_dt != 0.0) f.rho[i] += density_dt * f.drho_dt[i];
+  }
+};
+
+}  // namespace
+
+void compute_pressure_interaction(FluidBody& fluid, const NeighborList& inner, std::vector<FluidContact>& contacts,
+                                  const Vec2& body_acceleration, Real kick_dt) {
+  for (FluidContact& c : contacts) c.pair_pressure_force.resize(c.pairs.pair_count());
+  compute_renormalised_density_gradient(fluid, inner);
+  sweep_with_contacts(inner, contacts, PressureInteraction{fluid, fluid.particles, contacts, body_acceleration, kick_dt});
 }
 
 void kick(FluidBody& fluid, Real dt, const Vec2& body_acceleration) {
@@ -86,47 +164,11 @@ void kick(FluidBody& fluid, Real dt, const Vec2& body_acceleration) {
 
 void add_velocity_divergence_and_dissipation(FluidBody& fluid, const NeighborList& inner,
                                              std::vector<FluidContact>& contacts, Real position_dt, Real density_dt) {
-  FluidParticles& f = fluid.particles;
   const RiemannDissipation& riemann = fluid.riemann;
   for (FluidContact& c : contacts)
     c.pair_dissipation_force.assign(riemann.momentum ? c.pairs.pair_count() : 0, Vec2::Zero());
-
-  parallel_for_each(f.size(), [&](std::size_t i) {
-    // No particle reads another's position or density here: both updates follow particle by particle.
-    if (position_dt != 0.0) f.pos[i] += position_dt * f.vel[i];
-    const Vec2 v_i = f.vel[i];
-    const Real vol_i = f.vol[i];
-    Real divergence = 0.0;
-    Vec2 dissipation = Vec2::Zero();
-    for (const Neighbor& n : inner.of(i)) {
-      const Real u = (v_i - f.vel[n.j]).dot(n.e);
-      divergence += f.vol[n.j] * u * n.dW;
-      if (riemann.momentum) dissipation += (vol_i * f.vol[n.j] * riemann.momentum_coefficient(u) * n.dW) * n.e;
-    }
-    for (FluidContact& c : contacts) {
-      const RealArray& vol = *c.boundary.vol;
-      const Vec2Array& vbar = *c.boundary.vel_ave;
-      const Vec2Array& normal = *c.boundary.normal;
-      const Index first = c.pairs.offset(i);
-      const auto list = c.pairs.of(i);
-      for (std::size_t k = 0; k < list.size(); ++k) {
-        const Neighbor& n = list[k];
-        const Vec2 relative = v_i - vbar[n.j];
-        divergence += vol[n.j] * 2.0 * relative.dot(n.e) * n.dW;
-        if (riemann.momentum) {
-          const Vec2 n_f = n.e.dot(normal[n.j]) >= 0.0 ? normal[n.j] : Vec2(-normal[n.j]);
-          const Real u = 2.0 * relative.dot(n_f);
-          const Vec2 pair = (vol_i * vol[n.j] * riemann.momentum_coefficient(u) * n.dW) * n_f;
-          c.pair_dissipation_force[first + k] = pair;
-          dissipation += pair;
-        }
-      }
-    }
-    f.drho_dt[i] += f.rho[i] * divergence;
-    f.dissipation_force[i] = dissipation;
-    if (density_dt != 0.0) f.rho[i] += density_dt * f.drho_dt[i];
-  });
-
+  sweep_with_contacts(inner, contacts,
+                      DivergenceAndDissipation{fluid.particles, riemann, contacts, position_dt, density_dt});
   for (FluidContact& c : contacts) {
     c.boundary_dissipation_reaction.assign(c.pairs_of_boundary.size(), Vec2::Zero());
     if (riemann.momentum) accumulate_boundary_reaction(c, c.pair_dissipation_force, c.boundary_dissipation_reaction);
@@ -146,7 +188,7 @@ void acoustic_second_half(FluidBody& fluid, const NeighborList& inner, std::vect
 void accumulate_boundary_reaction(const FluidContact& contact, const Vec2Array& pair_force, Vec2Array& reaction) {
   parallel_for_each(contact.pairs_of_boundary.size(), [&](std::size_t a) {
     Vec2 sum = Vec2::Zero();
-    for (Index k : contact.pairs_of_boundary.of(a)) sum -= pair_force[k];
+    for_each_pair_of_target(contact.pairs_of_boundary, a, [&](Index k) { sum -= pair_force[k]; });
     reaction[a] += sum;
   });
 }

@@ -1,6 +1,7 @@
 #include "fluid/density_summation.hpp"
 
 #include "core/parallel.hpp"
+#include "interaction/pair_sweep.hpp"
 
 #include <algorithm>
 #include <limits>
@@ -9,17 +10,28 @@ namespace mrsph {
 
 namespace {
 
+// sum_j W_ij m_j / rho0 over the fluid and sum_a W_ia V_a over the boundaries, with i's own W(0).
+struct KernelSum {
+  struct Side {
+    const RealArray& vol;
+  };
+  const FluidParticles& f;
+  const std::vector<FluidContact>& contacts;
+  Real rho0;
+
+  void inner(Real& sum, std::size_t, const Neighbor& n) const { sum += n.W * f.mass[n.j] / rho0; }
+  Side boundary(std::size_t c) const { return {*contacts[c].boundary.vol}; }
+  void contact(Real& sum, std::size_t, const Side& b, Index, const Neighbor& n) const { sum += n.W * b.vol[n.j]; }
+};
+
 Real summation_density(const FluidBody& fluid, const NeighborList& inner, const std::vector<FluidContact>& contacts,
                        std::size_t i) {
   const FluidParticles& f = fluid.particles;
   const Real rho0 = fluid.material.rho0();
   const Real v0_i = f.mass[i] / rho0;
   Real sum = fluid.kernel.W0() * v0_i;
-  for (const Neighbor& n : inner.of(i)) sum += n.W * f.mass[n.j] / rho0;
-  for (const FluidContact& c : contacts) {
-    const RealArray& vol = *c.boundary.vol;
-    for (const Neighbor& n : c.pairs.of(i)) sum += n.W * vol[n.j];
-  }
+  KernelSum op{f, contacts, rho0};
+  visit_with_contacts(inner, contacts, i, op, sum);
   return rho0 / fluid.lattice_number_density * sum / v0_i;
 }
 

@@ -1,6 +1,7 @@
 #include "fsi/fluid_solid_coupling.hpp"
 
 #include "core/parallel.hpp"
+#include "interaction/pair_sweep.hpp"
 
 namespace mrsph {
 
@@ -8,10 +9,10 @@ void set_force_from_fluid(const FluidContact& contact, SolidParticles& solid) {
   const bool has_viscous = !contact.pair_viscous_force.empty();
   parallel_for_each(solid.size(), [&](std::size_t a) {
     Vec2 force = contact.boundary_dissipation_reaction[a];
-    for (Index k : contact.pairs_of_boundary.of(a)) {
+    for_each_pair_of_target(contact.pairs_of_boundary, a, [&](Index k) {
       force -= contact.pair_pressure_force[k];
       if (has_viscous) force -= contact.pair_viscous_force[k];
-    }
+    });
     solid.force_prior[a] = force;
   });
 }

@@ -1,6 +1,7 @@
 #include "observers/snapshot.hpp"
 
 #include "core/parallel.hpp"
+#include "interaction/pair_sweep.hpp"
 
 #include <cmath>
 
@@ -13,11 +14,11 @@ RealArray fluid_vorticity(const Simulation& sim) {
   if (inner.size() != f.size()) return omega;
   parallel_for_each(f.size(), [&](std::size_t i) {
     Real sum = 0.0;
-    for (const Neighbor& n : inner.of(i)) {
+    for_each_pair(inner, i, [&](Index, const Neighbor& n) {
       const Vec2 dv = f.vel[n.j] - f.vel[i];
       const Vec2 grad = n.dW * n.e;
       sum += f.vol[n.j] * (dv.x() * grad.y() - dv.y() * grad.x());
-    }
+    });
     omega[i] = sum;
   });
   return omega;

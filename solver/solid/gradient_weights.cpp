@@ -1,6 +1,7 @@
 #include "solid/gradient_weights.hpp"
 
 #include "core/parallel.hpp"
+#include "interaction/pair_sweep.hpp"
 
 #include <Eigen/Dense>
 
@@ -34,50 +35,43 @@ Vec5 quadratic_basis(const Neighbor& nb, Real h) {
 }
 
 // Linear (the paper's B0): M = sum_b phi_ab d d^T, d = r0_b - r0_a = -r e; w_ab = phi_ab B d.
-void linear_weights(std::span<const Neighbor> list, const RealArray& vol0, Mat2& B, Vec2* w) {
+void linear_weights(const NeighborList& reference, std::size_t a, const RealArray& vol0, Mat2& B, Vec2Array& w) {
   Mat2 M = Mat2::Zero();
-  for (const Neighbor& nb : list) {
+  for_each_pair(reference, a, [&](Index, const Neighbor& nb) {
     const Vec2 d = -nb.r * nb.e;
     M += pair_factor(vol0, nb) * d * d.transpose();
-  }
+  });
   B = regularised_inverse(M);
-  for (std::size_t k = 0; k < list.size(); ++k) w[k] = pair_factor(vol0, list[k]) * (B * (-list[k].r * list[k].e));
+  for_each_pair(reference, a, [&](Index k, const Neighbor& nb) { w[k] = pair_factor(vol0, nb) * (B * (-nb.r * nb.e)); });
 }
 
 // Exact for quadratic fields: the first two rows of the 5 x 5 moment matrix's inverse. False (weights
 // untouched) where the neighbours do not determine a quadratic.
-bool quadratic_weights(std::span<const Neighbor> list, const RealArray& vol0, Real h, Vec2* w) {
+bool quadratic_weights(const NeighborList& reference, std::size_t a, const RealArray& vol0, Real h, Vec2Array& w) {
   Mat5 M5 = Mat5::Zero();
-  for (const Neighbor& nb : list) {
+  for_each_pair(reference, a, [&](Index, const Neighbor& nb) {
     const Vec5 p = quadratic_basis(nb, h);
     M5 += pair_factor(vol0, nb) * p * p.transpose();
-  }
+  });
   const Eigen::FullPivLU<Mat5> lu(M5);
   if (!lu.isInvertible() || lu.rcond() < 1e-6) return false;
   const Mat5 inverse = lu.inverse();
-  for (std::size_t k = 0; k < list.size(); ++k) {
-    const Vec5 c = inverse * quadratic_basis(list[k], h);
-    w[k] = (pair_factor(vol0, list[k]) / h) * Vec2(c(0), c(1));
-  }
+  for_each_pair(reference, a, [&](Index k, const Neighbor& nb) {
+    const Vec5 c = inverse * quadratic_basis(nb, h);
+    w[k] = (pair_factor(vol0, nb) / h) * Vec2(c(0), c(1));
+  });
   return true;
 }
 
 // Reverse weights: entry (a, b) gets w_ba from b's list (the reference list is symmetric); and w_sum.
 void reverse_weights(const NeighborList& reference, GradientWeights& g) {
   parallel_for_each(reference.size(), [&](std::size_t a) {
-    const auto list = reference.of(a);
-    const Index first = reference.offset(a);
     Vec2 sum = Vec2::Zero();
-    for (std::size_t k = 0; k < list.size(); ++k) {
-      sum += g.w[first + k];
-      const Index b = list[k].j;
-      const auto back = reference.of(b);
-      for (std::size_t m = 0; m < back.size(); ++m)
-        if (static_cast<std::size_t>(back[m].j) == a) {
-          g.w_reverse[first + k] = g.w[reference.offset(b) + m];
-          break;
-        }
-    }
+    for_each_pair(reference, a, [&](Index k, const Neighbor& nb) {
+      sum += g.w[k];
+      const long back = pair_index(reference, nb.j, static_cast<Index>(a));
+      if (back >= 0) g.w_reverse[k] = g.w[back];
+    });
     g.w_sum[a] = sum;
   });
 }
@@ -88,17 +82,15 @@ GradientWeights compute_gradient_weights(const NeighborList& reference, const Re
                                          GradientCorrection correction) {
   const std::size_t n = reference.size();
   GradientWeights g;
-  g.neighbor.resize(reference.pair_count());
-  for (std::size_t k = 0; k < reference.pair_count(); ++k) g.neighbor[k] = reference.entry(k).j;
+  g.neighbor = pair_neighbors(reference);
   g.w.assign(reference.pair_count(), Vec2::Zero());
   g.w_reverse.assign(reference.pair_count(), Vec2::Zero());
   g.w_sum.assign(n, Vec2::Zero());
   g.B.assign(n, Mat2::Identity());
   std::vector<std::uint8_t> second(n, 0);
   parallel_for_each(n, [&](std::size_t a) {
-    Vec2* w = g.w.data() + reference.offset(a);
-    linear_weights(reference.of(a), vol0, g.B[a], w);
-    if (correction == GradientCorrection::SecondOrder) second[a] = quadratic_weights(reference.of(a), vol0, h, w) ? 1 : 0;
+    linear_weights(reference, a, vol0, g.B[a], g.w);
+    if (correction == GradientCorrection::SecondOrder) second[a] = quadratic_weights(reference, a, vol0, h, g.w) ? 1 : 0;
   });
   reverse_weights(reference, g);
   for (auto s : second) g.second_order_count += s;
@@ -118,18 +110,14 @@ Real highest_frequency_squared(const NeighborList& reference, const Vec2Array& w
   for (int iteration = 0; iteration < 200; ++iteration) {
     parallel_for_each(n, [&](std::size_t a) {
       Mat2 grad = Mat2::Zero();
-      const Index first = reference.offset(a);
-      const auto list = reference.of(a);
-      for (std::size_t k = 0; k < list.size(); ++k) grad += (u[list[k].j] - u[a]) * w[first + k].transpose();
+      for_each_pair(reference, a, [&](Index k, const Neighbor& nb) { grad += (u[nb.j] - u[a]) * w[k].transpose(); });
       const Mat2 strain = 0.5 * (grad + grad.transpose());
       stress[a] = lambda * strain.trace() * Mat2::Identity() + 2.0 * shear_modulus * strain;
     });
     parallel_for_each(n, [&](std::size_t a) {
       if (constrained[a]) { f[a].setZero(); return; }
-      const Index first = reference.offset(a);
-      const auto list = reference.of(a);
       Vec2 force = vol0[a] * (stress[a] * w_sum[a]);
-      for (std::size_t k = 0; k < list.size(); ++k) force -= vol0[list[k].j] * (stress[list[k].j] * w_reverse[first + k]);
+      for_each_pair(reference, a, [&](Index k, const Neighbor& nb) { force -= vol0[nb.j] * (stress[nb.j] * w_reverse[k]); });
       f[a] = force / mass[a];
     });
     Real norm_u = 0.0, norm_f = 0.0;

@@ -1,5 +1,6 @@
 #include "solid/solid_contact.hpp"
 
+#include "interaction/pair_sweep.hpp"
 #include "neighbor/cell_grid.hpp"
 
 #include <algorithm>
@@ -50,18 +51,10 @@ void refresh(SolidContact& contact, const ContactSide& a, const ContactSide& b) 
   const DomainBox unbounded;  // solids are never wrapped: their positions are used as they are
   CellGrid grid(unbounded, radius);
   grid.build(b.pos);
-  contact.candidates.clear();
-  for (std::size_t i = 0; i < a.pos.size(); ++i) {
-    if (!a.takes_part(i) || !grid.within_reach(a.pos[i])) continue;
-    grid.for_each_run_near(a.pos[i], [&](Index begin, Index end, const Vec2&) {
-      for (Index k = begin; k < end; ++k)
-        if ((a.pos[i] - grid.sorted_position(k)).squaredNorm() < radius * radius && b.takes_part(grid.sorted_index(k)))
-          contact.candidates.emplace_back(static_cast<Index>(i), grid.sorted_index(k));
-    });
-  }
   // Sorted, so the sums below run in one order however the list was built: results do not depend on
   // when it was rebuilt (pairs beyond the support add exactly zero).
-  std::sort(contact.candidates.begin(), contact.candidates.end());
+  list_pairs_within(a.pos, grid, radius, [&](std::size_t i) { return a.takes_part(i); },
+                    [&](std::size_t j) { return b.takes_part(j); }, contact.candidates);
   contact.travel = 0.0;
 }
 
@@ -70,26 +63,26 @@ void contact_overlaps(const SolidContact& contact, const ContactSide& a, const C
                       RealArray& phi_b) {
   phi_a.assign(a.pos.size(), 0.0);
   phi_b.assign(b.pos.size(), 0.0);
-  for (const auto& [i, j] : contact.candidates) {
+  for_each_listed_pair(contact.candidates, [&](Index i, Index j) {
     const Real w = contact.kernel.W((a.pos[i] - b.pos[j]).norm());
     phi_a[i] += b.vol[j] * w;
     phi_b[j] += a.vol[i] * w;
-  }
+  });
 }
 
 void add_forces(const SolidContact& contact, const ContactSide& a, const ContactSide& b) {
   if (contact.candidates.empty()) return;
   RealArray phi_a, phi_b;
   contact_overlaps(contact, a, b, phi_a, phi_b);
-  for (const auto& [i, j] : contact.candidates) {
+  for_each_listed_pair(contact.candidates, [&](Index i, Index j) {
     const Vec2 d = a.pos[i] - b.pos[j];
     const Real r = d.norm();
-    if (r >= contact.kernel.cutoff() || r == 0.0) continue;
+    if (r >= contact.kernel.cutoff() || r == 0.0) return;
     const Real pressure_sum = contact.stiffness * (phi_a[i] + phi_b[j]);
     const Vec2 f = -(a.vol[i] * b.vol[j] * pressure_sum * contact.kernel.dW(r) / r) * d;
     if (a.force) (*a.force)[i] += f;
     if (b.force) (*b.force)[j] -= f;
-  }
+  });
 }
 
 Real largest_overlap(const SolidContact& contact, const ContactSide& a, const ContactSide& b) {

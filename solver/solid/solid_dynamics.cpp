@@ -2,6 +2,7 @@
 
 #include "core/parallel.hpp"
 #include "geometry/particle_normals.hpp"
+#include "interaction/pair_sweep.hpp"
 #include "solid/solid_contact.hpp"
 #include "time/step_splitting.hpp"
 
@@ -28,9 +29,8 @@ Real criterion_from_rate(const SolidBody& solid, Real rate) {
 Mat2 deformation_rate(const SolidBody& solid, std::size_t a) {
   const SolidParticles& s = solid.particles;
   const GradientWeights& g = solid.weights;
-  const Index end = solid.inner.offset(a + 1);
   Mat2 rate = Mat2::Zero();
-  for (Index k = solid.inner.offset(a); k < end; ++k) rate += (s.vel[g.neighbor[k]] - s.vel[a]) * g.w[k].transpose();
+  for_each_pair_index(solid.inner, a, [&](Index k) { rate += (s.vel[g.neighbor[k]] - s.vel[a]) * g.w[k].transpose(); });
   return rate;
 }
 
@@ -69,7 +69,7 @@ void initialise_solid(SolidBody& solid) {
   solid.active.clear();
   for (std::size_t a = 0; a < s.size(); ++a) {
     bool needed = !s.constrained[a];
-    for (const Neighbor& n : solid.inner.of(a)) needed = needed || !s.constrained[n.j];
+    for_each_pair(solid.inner, a, [&](Index, const Neighbor& n) { needed = needed || !s.constrained[n.j]; });
     if (needed) solid.active.push_back(static_cast<Index>(a));
   }
 }
@@ -111,12 +111,11 @@ void compute_stress(SolidBody& solid) {
 Vec2 internal_force(const SolidBody& solid, std::size_t a) {
   const SolidParticles& s = solid.particles;
   const GradientWeights& g = solid.weights;
-  const Index end = solid.inner.offset(a + 1);
   Vec2 force = s.vol0[a] * (s.stress[a] * g.w_sum[a]);
-  for (Index k = solid.inner.offset(a); k < end; ++k) {
+  for_each_pair_index(solid.inner, a, [&](Index k) {
     const Index b = g.neighbor[k];
     force -= s.vol0[b] * (s.stress[b] * g.w_reverse[k]);
-  }
+  });
   return force;
 }
 
