@@ -61,7 +61,7 @@ TEST_CASE("A linear velocity field gives the exact deformation rate everywhere, 
 
 TEST_CASE("A rigid rotation gives zero stress for both materials (objectivity)", "[solid]") {
   for (const std::string model : {"saint_venant_kirchhoff", "neo_hookean"}) {
-    const ElasticMaterial m(solid_model_from_name(model), 1000, 1e6, 0.45);
+    const ElasticMaterial m(elastic_model_from_name(model), 1000, 1e6, 0.45);
     for (double angle : {0.1, 1.0, 2.5}) {
       const Mat2 R = rotation(angle);
       CHECK(m.first_piola_kirchhoff(R).norm() < 1e-6 * m.youngs_modulus() * 1e-6);
@@ -76,8 +76,8 @@ TEST_CASE("A rigid rotation gives zero stress for both materials (objectivity)",
 }
 
 TEST_CASE("For small strain the two materials give the same stress", "[solid]") {
-  const ElasticMaterial svk(SolidModel::SaintVenantKirchhoff, 1000, 1e6, 0.4);
-  const ElasticMaterial nh(SolidModel::NeoHookean, 1000, 1e6, 0.4);
+  const ElasticMaterial svk(SaintVenantKirchhoff{}, 1000, 1e6, 0.4);
+  const ElasticMaterial nh(NeoHookean{}, 1000, 1e6, 0.4);
   std::mt19937 gen(3);
   std::normal_distribution<double> u(0.0, 1.0);
   for (int trial = 0; trial < 20; ++trial) {
@@ -92,8 +92,8 @@ TEST_CASE("For small strain the two materials give the same stress", "[solid]") 
 }
 
 TEST_CASE("The second Piola-Kirchhoff stress is the derivative of the strain energy", "[solid]") {
-  for (const SolidModel model : {SolidModel::SaintVenantKirchhoff, SolidModel::NeoHookean}) {
-    const ElasticMaterial m(model, 1000, 1e6, 0.35);
+  for (const std::string& model : elastic_model_names()) {
+    const ElasticMaterial m(elastic_model_from_name(model), 1000, 1e6, 0.35);
     Mat2 F;
     F << 1.15, 0.1, -0.08, 0.9;
     // dW = P : dF for any variation dF.
@@ -123,4 +123,35 @@ TEST_CASE("Internal forces of a deformed body sum to zero (momentum is conserved
     scale += f.norm();
   }
   CHECK(total.norm() < 1e-12 * scale);
+}
+
+TEST_CASE("Every elastic model of the table linearises to its moduli, in plane and out of plane", "[solid]") {
+  std::mt19937 gen(5);
+  std::normal_distribution<double> u(0.0, 1.0);
+  for (const std::string& name : elastic_model_names()) {
+    const ElasticMaterial m(elastic_model_from_name(name), 1000, 1e6, 0.3);
+    CHECK(m.model_name() == name);
+    for (int trial = 0; trial < 10; ++trial) {
+      Mat2 G;
+      G << u(gen), u(gen), u(gen), u(gen);
+      const double eps = 1e-5;
+      const Mat2 strain = 0.5 * eps * (G + G.transpose());
+      const Mat2 F = Mat2::Identity() + eps * G;
+      const Mat2 linear = linear_elastic_stress(m.moduli(), strain);
+      // Nonlinear terms are of relative size eps (the strain), so 50 eps bounds them.
+      CHECK((m.first_piola_kirchhoff(F) - (linear + eps * G * linear)).norm() < 50 * eps * linear.norm());
+      CHECK(std::abs(m.out_of_plane_stress(F) - m.lambda() * strain.trace()) < 50 * eps * linear.norm());
+    }
+  }
+}
+
+TEST_CASE("An unknown model name is refused with every name of the table", "[solid]") {
+  try {
+    (void)elastic_model_from_name("mooney");
+    FAIL("accepted");
+  } catch (const std::invalid_argument& e) {
+    const std::string message = e.what();
+    for (const std::string& name : elastic_model_names()) CHECK(message.find('"' + name + '"') != std::string::npos);
+    CHECK(message.find("'mooney'") != std::string::npos);
+  }
 }

@@ -66,7 +66,7 @@ void print_scene(const mrsph::LoadedScene& scene) {
     std::size_t clamped = 0;
     for (auto c : s.particles.constrained) clamped += c;
     fmt::print("solid      {:<12} {:>8} particles  dp {:g}  h {:g}  {}  E {:g}  nu {:g}  c_S {:g}  clamped {}\n", s.name,
-               s.particles.size(), s.dp, s.h(), mrsph::solid_model_name(s.material.model()), s.material.youngs_modulus(),
+               s.particles.size(), s.dp, s.h(), s.material.model_name(), s.material.youngs_modulus(),
                s.material.poisson_ratio(), s.material.sound_speed(), clamped);
     const mrsph::Real step = mrsph::solid_time_step(s);
     fmt::print("           step {:.4g} (the criterion's 0.6 h / c_S times {:.3f} for its gradient weights)", step,

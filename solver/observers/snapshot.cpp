@@ -28,11 +28,7 @@ Real von_mises_stress(const ElasticMaterial& material, const Mat2& F) {
   const Real J = F.determinant();
   const Mat2 S = material.second_piola_kirchhoff(F);
   const Mat2 sigma = F * S * F.transpose() / J;
-  // Out of plane (plane strain, F_zz = 1): S_zz = lambda tr(E) for SVK, lambda ln J for Neo-Hookean.
-  const Mat2 C = F.transpose() * F;
-  const Real S_zz = material.model() == SolidModel::SaintVenantKirchhoff
-                        ? material.lambda() * 0.5 * (C.trace() - 2.0)
-                        : material.lambda() * std::log(J);
+  const Real S_zz = material.out_of_plane_stress(F);  // plane strain: F_zz = 1, sigma_zz = S_zz / J
   const Real sxx = sigma(0, 0), syy = sigma(1, 1), sxy = sigma(0, 1), szz = S_zz / J;
   return std::sqrt(0.5 * ((sxx - syy) * (sxx - syy) + (syy - szz) * (syy - szz) + (szz - sxx) * (szz - sxx)) +
                    3.0 * sxy * sxy);

@@ -73,7 +73,7 @@ ElasticMaterial read_elastic_material(const SceneNode& mat) {
   const Real E = mat.positive("youngs_modulus");
   const Real nu = mat.in_range("poisson_ratio", -1.0, 0.5);
   mat.finish();
-  return ElasticMaterial(solid_model_from_name(model_name), rho, E, nu);
+  return ElasticMaterial(elastic_model_from_name(model_name), rho, E, nu);
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include "core/parallel.hpp"
 #include "interaction/pair_sweep.hpp"
+#include "solid/constitutive/elastic_moduli.hpp"
 
 #include <Eigen/Dense>
 
@@ -103,22 +104,19 @@ Real highest_frequency_squared(const NeighborList& reference, const Vec2Array& w
   const std::size_t n = reference.size();
   Vec2Array u(n), f(n);
   Mat2Array stress(n);
+  const std::vector<Index> neighbor = pair_neighbors(reference);
   // A deterministic, non-smooth start excites every mode.
   for (std::size_t a = 0; a < n; ++a)
     u[a] = constrained[a] ? Vec2::Zero() : Vec2(std::sin(12.9898 * a + 1.0), std::cos(78.233 * a + 2.0));
   Real estimate = 0.0;
   for (int iteration = 0; iteration < 200; ++iteration) {
     parallel_for_each(n, [&](std::size_t a) {
-      Mat2 grad = Mat2::Zero();
-      for_each_pair(reference, a, [&](Index k, const Neighbor& nb) { grad += (u[nb.j] - u[a]) * w[k].transpose(); });
-      const Mat2 strain = 0.5 * (grad + grad.transpose());
-      stress[a] = lambda * strain.trace() * Mat2::Identity() + 2.0 * shear_modulus * strain;
+      const Mat2 grad = weighted_gradient(reference, neighbor, w, u, a);
+      stress[a] = linear_elastic_stress({lambda, shear_modulus}, 0.5 * (grad + grad.transpose()));
     });
     parallel_for_each(n, [&](std::size_t a) {
       if (constrained[a]) { f[a].setZero(); return; }
-      Vec2 force = vol0[a] * (stress[a] * w_sum[a]);
-      for_each_pair(reference, a, [&](Index k, const Neighbor& nb) { force -= vol0[nb.j] * (stress[nb.j] * w_reverse[k]); });
-      f[a] = force / mass[a];
+      f[a] = variational_force(reference, neighbor, w_reverse, w_sum[a], vol0, stress, a) / mass[a];
     });
     Real norm_u = 0.0, norm_f = 0.0;
     for (std::size_t a = 0; a < n; ++a) { norm_u += u[a].squaredNorm(); norm_f += f[a].squaredNorm(); }

@@ -20,6 +20,7 @@
 #pragma once
 
 #include "core/types.hpp"
+#include "interaction/pair_sweep.hpp"
 #include "neighbor/neighbor_list.hpp"
 
 #include <cstdint>
@@ -48,6 +49,24 @@ struct GradientWeights {
   // `mrsph check` with omega_max dt_S: position Verlet is stable for omega_max dt_S < 2.
   Real highest_frequency = 0.0;
 };
+
+// sum_b (u_b - u_a) (x) w_ab over a's pairs (neighbor: the pairs' b, GradientWeights::neighbor): the
+// gradient of a field u, dF/dt for the velocity (Eq. 17), F - I for the displacement.
+inline Mat2 weighted_gradient(const NeighborList& reference, const std::vector<Index>& neighbor, const Vec2Array& w,
+                              const Vec2Array& u, std::size_t a) {
+  Mat2 gradient = Mat2::Zero();
+  for_each_pair_index(reference, a, [&](Index k) { gradient += (u[neighbor[k]] - u[a]) * w[k].transpose(); });
+  return gradient;
+}
+
+// The variational internal force f_a = V_a P_a sum_b w_ab - sum_b V_b P_b w_ba (header).
+inline Vec2 variational_force(const NeighborList& reference, const std::vector<Index>& neighbor,
+                              const Vec2Array& w_reverse, const Vec2& w_sum_a, const RealArray& vol0,
+                              const Mat2Array& stress, std::size_t a) {
+  Vec2 force = vol0[a] * (stress[a] * w_sum_a);
+  for_each_pair_index(reference, a, [&](Index k) { force -= vol0[neighbor[k]] * (stress[neighbor[k]] * w_reverse[k]); });
+  return force;
+}
 
 // Highest eigenfrequency squared of the linearised operator u -> f(u)/m (plane-strain linear
 // elasticity with Lame constants lambda, G), by power iteration; constrained particles are fixed.

@@ -29,9 +29,7 @@ Real criterion_from_rate(const SolidBody& solid, Real rate) {
 Mat2 deformation_rate(const SolidBody& solid, std::size_t a) {
   const SolidParticles& s = solid.particles;
   const GradientWeights& g = solid.weights;
-  Mat2 rate = Mat2::Zero();
-  for_each_pair_index(solid.inner, a, [&](Index k) { rate += (s.vel[g.neighbor[k]] - s.vel[a]) * g.w[k].transpose(); });
-  return rate;
+  return weighted_gradient(solid.inner, g.neighbor, g.w, s.vel, a);
 }
 
 }  // namespace
@@ -111,12 +109,7 @@ void compute_stress(SolidBody& solid) {
 Vec2 internal_force(const SolidBody& solid, std::size_t a) {
   const SolidParticles& s = solid.particles;
   const GradientWeights& g = solid.weights;
-  Vec2 force = s.vol0[a] * (s.stress[a] * g.w_sum[a]);
-  for_each_pair_index(solid.inner, a, [&](Index k) {
-    const Index b = g.neighbor[k];
-    force -= s.vol0[b] * (s.stress[b] * g.w_reverse[k]);
-  });
-  return force;
+  return variational_force(solid.inner, g.neighbor, g.w_reverse, g.w_sum[a], s.vol0, s.stress, a);
 }
 
 namespace {
