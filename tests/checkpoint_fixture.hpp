@@ -2,8 +2,8 @@
 #pragma once
 
 #include "scene/scene_loader.hpp"
-#include "simulation/checkpoint.hpp"
-#include "simulation/runner.hpp"
+#include "run/checkpoint.hpp"
+#include "run/runner.hpp"
 
 #include <atomic>
 #include <filesystem>

@@ -1,8 +1,8 @@
 #include "checkpoint_fixture.hpp"
 #include "core/thread_limit.hpp"
-#include "simulation/checkpoint.hpp"
+#include "run/checkpoint.hpp"
 #include "scene/scene_loader.hpp"
-#include "simulation/runner.hpp"
+#include "run/runner.hpp"
 
 #include <catch2/catch.hpp>
 

@@ -2,7 +2,7 @@
 #include "fluid/acoustic_step.hpp"
 #include "fluid/viscous_force.hpp"
 #include "scene_fixture.hpp"
-#include "simulation/runner.hpp"
+#include "run/runner.hpp"
 
 #include <catch2/catch.hpp>
 

@@ -3,8 +3,8 @@
 #include "boundary/open_boundary.hpp"
 #include "checkpoint_fixture.hpp"
 #include "scene/scene_loader.hpp"
-#include "simulation/checkpoint.hpp"
-#include "simulation/runner.hpp"
+#include "run/checkpoint.hpp"
+#include "run/runner.hpp"
 
 #include <catch2/catch.hpp>
 

@@ -1,7 +1,7 @@
 #include "io/vtp_writer.hpp"
 #include "observers/snapshot.hpp"
 #include "scene_fixture.hpp"
-#include "simulation/runner.hpp"
+#include "run/runner.hpp"
 
 #include <catch2/catch.hpp>
 

@@ -1,4 +1,4 @@
-#include "time/step_splitting.hpp"
+#include "core/step_splitting.hpp"
 
 #include <catch2/catch.hpp>
 

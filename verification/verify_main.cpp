@@ -23,7 +23,7 @@
 #endif
 
 namespace fs = std::filesystem;
-using mrsph::verification::Json;
+using mrsph::Json;
 
 int main(int argc, char** argv) {
   std::string suite_list_help;

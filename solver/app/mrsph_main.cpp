@@ -3,9 +3,9 @@
 #include "fluid/density_summation.hpp"
 #include "io/atomic_file.hpp"
 #include "scene/scene_loader.hpp"
-#include "simulation/checkpoint.hpp"
-#include "simulation/run_summary.hpp"
-#include "simulation/runner.hpp"
+#include "run/checkpoint.hpp"
+#include "run/run_summary.hpp"
+#include "run/runner.hpp"
 #include "solid/solid_dynamics.hpp"
 
 #include <CLI/CLI.hpp>

@@ -6,15 +6,22 @@
 //    applies in the same acoustic step. Their sum is the solid's F^prior, held constant over the
 //    solid sub-steps of the acoustic step.
 //  - Kinematics the fluid sees (Eq. 35): the solid velocity and acceleration averaged over the
-//    acoustic step (simulation.hpp, SolidKinematics), or, for comparison, the code's second
+//    acoustic step (SolidKinematics below), or, for comparison, the code's second
 //    difference or the instantaneous values of the last sub-step.
 #pragma once
 
 #include "fluid/fluid_body.hpp"
-#include "simulation/simulation.hpp"
 #include "solid/solid_body.hpp"
 
 namespace mrsph {
+
+// How the fluid sees an elastic solid within an acoustic step (paper Eq. 35 and section 3.2):
+//   Averaged                  time averages over the acoustic step [t, t + dt]:
+//                             vbar = (r(t + dt) - r(t)) / dt,  abar = (v(t + dt) - v(t)) / dt
+//   AveragedSecondDifference  the paper's code: the same vbar, abar = (vbar^{n+1} - vbar^n) / dt,
+//                             a second difference of positions over two acoustic steps
+//   Instantaneous             velocity and acceleration of the last solid sub-step
+enum class SolidKinematics { Averaged, AveragedSecondDifference, Instantaneous };
 
 // F^prior_a = -sum over pairs (pressure + viscous) + dissipation reaction.
 void set_force_from_fluid(const FluidContact& contact, SolidParticles& solid);

@@ -5,10 +5,9 @@
 #pragma once
 
 #include "core/errors.hpp"
+#include "core/json.hpp"
 #include "core/types.hpp"
 #include "scene/expression.hpp"
-
-#include <nlohmann/json.hpp>
 
 #include <initializer_list>
 #include <memory>
@@ -19,7 +18,6 @@
 
 namespace mrsph {
 
-using Json = nlohmann::ordered_json;
 
 struct SceneContext {
   std::string file;

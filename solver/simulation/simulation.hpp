@@ -9,6 +9,7 @@
 #include "boundary/wall_body.hpp"
 #include "core/errors.hpp"
 #include "fluid/fluid_body.hpp"
+#include "fsi/fluid_solid_coupling.hpp"
 #include "neighbor/domain_box.hpp"
 #include "solid/solid_body.hpp"
 #include "solid/solid_contact.hpp"
@@ -24,14 +25,6 @@ struct StepCounters {
   long long acoustic = 0;
   long long solid = 0;  // solid sub-steps, summed over solid bodies
 };
-
-// How the fluid sees an elastic solid within an acoustic step (paper Eq. 35 and section 3.2):
-//   Averaged                  time averages over the acoustic step [t, t + dt]:
-//                             vbar = (r(t + dt) - r(t)) / dt,  abar = (v(t + dt) - v(t)) / dt
-//   AveragedSecondDifference  the paper's code: the same vbar, abar = (vbar^{n+1} - vbar^n) / dt,
-//                             a second difference of positions over two acoustic steps
-//   Instantaneous             velocity and acceleration of the last solid sub-step
-enum class SolidKinematics { Averaged, AveragedSecondDifference, Instantaneous };
 
 struct DivergenceLimits {
   Real speed_factor = 3.0;  // |v| above this multiple of the body's sound speed is a runaway

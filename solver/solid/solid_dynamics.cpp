@@ -4,7 +4,7 @@
 #include "geometry/particle_normals.hpp"
 #include "interaction/pair_sweep.hpp"
 #include "solid/solid_contact.hpp"
-#include "time/step_splitting.hpp"
+#include "core/step_splitting.hpp"
 
 #include <algorithm>
 #include <cmath>

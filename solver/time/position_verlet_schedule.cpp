@@ -7,7 +7,7 @@
 #include "fluid/viscous_force.hpp"
 #include "fsi/fluid_solid_coupling.hpp"
 #include "solid/solid_dynamics.hpp"
-#include "time/step_splitting.hpp"
+#include "core/step_splitting.hpp"
 
 #include <algorithm>
 #include <limits>

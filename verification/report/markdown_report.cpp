@@ -1,5 +1,7 @@
 #include "report/markdown_report.hpp"
 
+#include "core/json.hpp"
+
 #include <fmt/chrono.h>
 #include <fmt/format.h>
 
@@ -13,7 +15,6 @@ namespace mrsph::verification {
 
 namespace {
 
-using Json = nlohmann::ordered_json;
 
 std::string number(const Json& v) {
   if (v.is_null()) return "-";

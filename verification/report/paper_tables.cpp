@@ -3,7 +3,7 @@
 #include "report/reference_table.hpp"
 
 #include <fmt/format.h>
-#include <nlohmann/json.hpp>
+#include "core/json.hpp"
 
 #include <cmath>
 #include <fstream>
@@ -13,7 +13,6 @@ namespace mrsph::verification {
 
 namespace {
 
-using Json = nlohmann::ordered_json;
 
 std::optional<Json> summary_of(const std::filesystem::path& run_dir, const std::string& suite) {
   std::ifstream in(run_dir / suite / "summary.json");

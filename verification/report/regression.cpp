@@ -1,5 +1,7 @@
 #include "report/regression.hpp"
 
+#include "core/json.hpp"
+
 #include <fmt/format.h>
 
 #include <cmath>
@@ -9,7 +11,6 @@ namespace mrsph::verification {
 
 namespace {
 
-using Json = nlohmann::ordered_json;
 
 std::optional<Json> read_summary(const std::filesystem::path& path) {
   std::ifstream in(path);

@@ -4,7 +4,7 @@
 // every reference from a source outside it (a paper, an analytic solution, a benchmark).
 #pragma once
 
-#include <nlohmann/json.hpp>
+#include "core/json.hpp"
 
 #include <filesystem>
 #include <string>
@@ -12,7 +12,6 @@
 
 namespace mrsph::verification {
 
-using Json = nlohmann::ordered_json;
 
 struct SuiteRun {
   std::string case_name;

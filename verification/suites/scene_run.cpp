@@ -1,6 +1,6 @@
 #include "suites/scene_run.hpp"
 
-#include "simulation/run_summary.hpp"
+#include "run/run_summary.hpp"
 #include "sweep/sweep.hpp"
 
 #include <fmt/format.h>

@@ -3,7 +3,7 @@
 #include "io/atomic_file.hpp"
 #include "report/reference_table.hpp"
 #include "scene/scene_loader.hpp"
-#include "simulation/run_summary.hpp"
+#include "run/run_summary.hpp"
 
 #include <fmt/format.h>
 #include <tbb/task_arena.h>

@@ -11,7 +11,7 @@
 
 #include "report/suite_summary.hpp"
 #include "scene/scene_loader.hpp"
-#include "simulation/runner.hpp"
+#include "run/runner.hpp"
 #include "suites/suite.hpp"
 
 #include <filesystem>

@@ -1,9 +1,9 @@
-#include "simulation/runner.hpp"
+#include "run/runner.hpp"
 
 #include "io/csv_table.hpp"
 #include "io/vtp_writer.hpp"
 #include "observers/snapshot.hpp"
-#include "simulation/checkpoint.hpp"
+#include "run/checkpoint.hpp"
 
 #include <fmt/format.h>
 

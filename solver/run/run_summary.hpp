@@ -3,7 +3,7 @@
 #pragma once
 
 #include "scene/scene_loader.hpp"
-#include "simulation/runner.hpp"
+#include "run/runner.hpp"
 
 #include <nlohmann/json.hpp>
 

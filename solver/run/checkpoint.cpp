@@ -1,4 +1,4 @@
-#include "simulation/checkpoint.hpp"
+#include "run/checkpoint.hpp"
 
 #include "io/atomic_file.hpp"
 #include "io/binary_stream.hpp"

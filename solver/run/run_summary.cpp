@@ -1,4 +1,4 @@
-#include "simulation/run_summary.hpp"
+#include "run/run_summary.hpp"
 
 #include <thread>
 

@@ -8,7 +8,7 @@
 #pragma once
 
 #include "scene/scene_node.hpp"
-#include "simulation/runner.hpp"
+#include "run/runner.hpp"
 #include "simulation/simulation.hpp"
 
 #include <filesystem>
