@@ -5,6 +5,7 @@
 #include "core/types.hpp"
 
 #include <cstdint>
+#include <type_traits>
 #include <vector>
 
 namespace mrsph {
@@ -30,13 +31,33 @@ struct SolidParticles {
   Vec2Array vel_acoustic_start;  // velocity at the start of the current acoustic step
   std::vector<std::uint8_t> constrained;  // 1: clamped (held at pos0 with zero velocity)
 
+  // The one list of fields: resize and the checkpoint go through it. Particles is SolidParticles or
+  // const SolidParticles; visit(array, name) for each field. The state fields change in time (the
+  // checkpoint keeps them); the reference fields are set once from the scene (rebuilt on restart).
+  template <class Particles, class Visit>
+  static void for_each_state_field(Particles& s, Visit&& visit) {
+    visit(s.pos, "solid positions"); visit(s.vel, "solid velocities"); visit(s.acc, "solid accelerations");
+    visit(s.F, "deformation gradients"); visit(s.dF_dt, "deformation rates"); visit(s.stress, "stresses");
+    visit(s.rho, "solid densities"); visit(s.normal, "solid normals"); visit(s.force_prior, "forces from the fluid");
+    visit(s.vel_ave, "averaged velocities"); visit(s.acc_ave, "averaged accelerations");
+    visit(s.pos_acoustic_start, "acoustic-step start positions");
+    visit(s.vel_acoustic_start, "acoustic-step start velocities");
+  }
+  template <class Particles, class Visit>
+  static void for_each_field(Particles& s, Visit&& visit) {
+    visit(s.pos0, "reference positions"); visit(s.B, "correction matrices"); visit(s.mass, "solid masses");
+    visit(s.vol0, "reference volumes"); visit(s.normal0, "reference normals"); visit(s.constrained, "clamped flags");
+    for_each_state_field(s, visit);
+  }
+
   std::size_t size() const { return pos.size(); }
+  // New entries are zero.
   void resize(std::size_t n) {
-    for (Vec2Array* a : {&pos0, &pos, &vel, &acc, &normal0, &normal, &force_prior, &vel_ave, &acc_ave, &pos_acoustic_start, &vel_acoustic_start})
-      a->resize(n, Vec2::Zero());
-    for (Mat2Array* a : {&F, &dF_dt, &B, &stress}) a->resize(n, Mat2::Zero());
-    for (RealArray* a : {&rho, &mass, &vol0}) a->resize(n, 0.0);
-    constrained.resize(n, 0);
+    for_each_field(*this, [n](auto& a, const char*) {
+      using Value = typename std::decay_t<decltype(a)>::value_type;
+      if constexpr (std::is_arithmetic_v<Value>) a.resize(n, Value(0));
+      else a.resize(n, Value::Zero());
+    });
   }
 };
 

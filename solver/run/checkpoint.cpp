@@ -44,15 +44,6 @@ struct Loader {
   void operator()(std::vector<T>& a, const char* what) { a = r.array<T>(a.size(), what); }
 };
 
-template <class Particles, class Visit>
-void visit_solid(Particles& s, Visit&& v) {
-  v(s.pos, "solid positions"); v(s.vel, "solid velocities"); v(s.acc, "solid accelerations");
-  v(s.F, "deformation gradients"); v(s.dF_dt, "deformation rates"); v(s.stress, "stresses"); v(s.rho, "solid densities");
-  v(s.normal, "solid normals"); v(s.force_prior, "forces from the fluid"); v(s.vel_ave, "averaged velocities");
-  v(s.acc_ave, "averaged accelerations"); v(s.pos_acoustic_start, "acoustic-step start positions");
-  v(s.vel_acoustic_start, "acoustic-step start velocities");
-}
-
 }  // namespace
 
 std::string serialise_checkpoint(const Json& scene_document, const std::string& scene_file, const Simulation& sim,
@@ -101,7 +92,7 @@ std::string serialise_checkpoint(const Json& scene_document, const std::string& 
   w.value<std::uint64_t>(sim.fluid_contacts().size());
   for (const FluidContact& c : sim.fluid_contacts()) save(c.boundary_dissipation_reaction, "");
   w.value<std::uint64_t>(sim.solids().size());
-  for (const SolidBody& solid : sim.solids()) visit_solid(solid.particles, save);
+  for (const SolidBody& solid : sim.solids()) SolidParticles::for_each_state_field(solid.particles, save);
   return w.bytes();
 }
 
@@ -173,7 +164,7 @@ void restore_checkpoint(const std::filesystem::path& path, Simulation& sim, Runn
   for (FluidContact& c : sim.fluid_contacts()) load(c.boundary_dissipation_reaction, "boundary dissipation reactions");
   const auto solids = r.value<std::uint64_t>();
   if (solids != sim.solids().size()) throw std::runtime_error(path.string() + ": solid bodies differ from the scene");
-  for (SolidBody& solid : sim.solids()) visit_solid(solid.particles, load);
+  for (SolidBody& solid : sim.solids()) SolidParticles::for_each_state_field(solid.particles, load);
   if (!r.at_end()) throw std::runtime_error(path.string() + ": unexpected data after the last body");
   sim.restore_relations(rebuilds);
 }
