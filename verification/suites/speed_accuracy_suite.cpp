@@ -32,18 +32,17 @@ struct Point {
   Json config;
 };
 
-void add(std::vector<SweepRun>& runs, std::vector<std::string>& benchmark, SweepRun run, const std::string& name) {
-  benchmark.push_back(name);
-  runs.push_back(std::move(run));
-}
-
-}  // namespace
-
-SuiteSummary run_speed_accuracy_suite(const SuiteContext& ctx) {
-  SuiteSummary summary("speed-accuracy", ctx.quick, ctx.threads);
+// The sweep's runs and, beside each, the benchmark it belongs to.
+struct Plan {
   std::vector<SweepRun> runs;
   std::vector<std::string> benchmark;
+  void add(SweepRun run, const std::string& name) {
+    benchmark.push_back(name);
+    runs.push_back(std::move(run));
+  }
+};
 
+void plan_plate(const SuiteContext& ctx, Plan& plan) {
   for (const std::string correction : {"first_order", "second_order"})
     for (int res : ctx.quick ? std::vector<int>{4, 8} : std::vector<int>{4, 8, 16, 32}) {
       SweepRun r;
@@ -52,9 +51,15 @@ SuiteSummary run_speed_accuracy_suite(const SuiteContext& ctx) {
       r.overrides = {fmt::format("parameters.resolution={}", res), "parameters.periods=3.5",
                      fmt::format("solids[0].gradient_correction=\"{}\"", correction)};
       r.config = {{"resolution", res}, {"gradient_correction", correction}};
-      add(runs, benchmark, r, "plate");
+      plan.add(r, "plate");
     }
+}
 
+void plan_gate(const SuiteContext& ctx, Plan& plan, SuiteSummary& summary) {
+  if (!ctx.reference_dir) {
+    summary.note_skipped("gate points", "no --reference-dir: the error against the experiment cannot be measured");
+    return;
+  }
   struct GatePoint { int res, ratio; std::string schedule; };
   const std::vector<GatePoint> gate_points =
       ctx.quick ? std::vector<GatePoint>{{4, 2, "multi_step_position_verlet"}, {4, 4, "multi_step_position_verlet"}}
@@ -62,60 +67,71 @@ SuiteSummary run_speed_accuracy_suite(const SuiteContext& ctx) {
                                          {4, 4, "multi_step_position_verlet"}, {4, 2, "single_step_position_verlet"},
                                          {8, 1, "multi_step_position_verlet"}, {8, 2, "multi_step_position_verlet"},
                                          {8, 4, "multi_step_position_verlet"}};
-  if (ctx.reference_dir)
-    for (const GatePoint& g : gate_points) {
-      SweepRun r;
-      r.label = fmt::format("gate b/dp_S={} ratio {} {}", g.res, g.ratio, g.schedule == "single_step_position_verlet" ? "single" : "multi");
-      r.scene = "elastic_gate.json";
-      r.overrides = {fmt::format("parameters.resolution={}", g.res), fmt::format("parameters.ratio={}", g.ratio),
-                     fmt::format("schedule.type=\"{}\"", g.schedule)};
-      r.config = {{"resolution", g.res}, {"ratio", g.ratio}, {"schedule", g.schedule}};
-      add(runs, benchmark, r, "gate");
-    }
-  else
-    summary.note_skipped("gate points", "no --reference-dir: the error against the experiment cannot be measured");
-
-  if (!ctx.quick)
-    for (const FsiCase& c : {FsiCase{"I", 1, 4, "multi_step_position_verlet"}, FsiCase{"II", 1, 8, "multi_step_position_verlet"},
-                             FsiCase{"III", 2, 4, "multi_step_position_verlet"}, FsiCase{"IV", 2, 4, "single_step_position_verlet"},
-                             FsiCase{"V", 4, 8, "multi_step_position_verlet"}, FsiCase{"III-8", 2, 8, "multi_step_position_verlet"}})
-      add(runs, benchmark, fsi2_sweep_run(c, 200.0), "FSI2");
-
-  const std::vector<SweepOutcome> outcomes = sweep(ctx, runs, summary);
-  if (outcomes.empty()) {
-    summary.write(ctx.out_dir);
-    return summary;
+  for (const GatePoint& g : gate_points) {
+    SweepRun r;
+    r.label = fmt::format("gate b/dp_S={} ratio {} {}", g.res, g.ratio, g.schedule == "single_step_position_verlet" ? "single" : "multi");
+    r.scene = "elastic_gate.json";
+    r.overrides = {fmt::format("parameters.resolution={}", g.res), fmt::format("parameters.ratio={}", g.ratio),
+                   fmt::format("schedule.type=\"{}\"", g.schedule)};
+    r.config = {{"resolution", g.res}, {"ratio", g.ratio}, {"schedule", g.schedule}};
+    plan.add(r, "gate");
   }
+}
 
-  std::vector<double> exp_t, exp_x;
+void plan_fsi2(const SuiteContext& ctx, Plan& plan) {
+  if (ctx.quick) return;
+  for (const FsiCase& c : {FsiCase{"I", 1, 4, "multi_step_position_verlet"}, FsiCase{"II", 1, 8, "multi_step_position_verlet"},
+                           FsiCase{"III", 2, 4, "multi_step_position_verlet"}, FsiCase{"IV", 2, 4, "single_step_position_verlet"},
+                           FsiCase{"V", 4, 8, "multi_step_position_verlet"}, FsiCase{"III-8", 2, 8, "multi_step_position_verlet"}})
+    plan.add(fsi2_sweep_run(c, 200.0), "FSI2");
+}
+
+// What each benchmark's error is measured against.
+struct References {
+  std::vector<double> exp_t, exp_x;  // the gate experiment's x [mm], first sample subtracted
+  Json turek_hron;                   // FSI2: A_y/D and St of Turek & Hron (2006)
+};
+
+References read_references(const SuiteContext& ctx) {
+  References refs;
   if (ctx.reference_dir)
     if (const auto t = read_numeric_table(*ctx.reference_dir / "antoci2007" / "Ex10X.txt")) {
-      exp_t = t->columns[0];
-      for (double v : t->columns[1]) exp_x.push_back(1000.0 * (v - t->columns[1].front()));
+      refs.exp_t = t->columns[0];
+      for (double v : t->columns[1]) refs.exp_x.push_back(1000.0 * (v - t->columns[1].front()));
     }
-  const Json th = read_project_reference(ctx.project_dir, "turek_hron_fsi2.json")["turek_hron_2006"];
+  refs.turek_hron = read_project_reference(ctx.project_dir, "turek_hron_fsi2.json")["turek_hron_2006"];
+  return refs;
+}
 
+// The error of one completed run (the file's header); NaN where it cannot be measured.
+double error_of(const SweepOutcome& o, const std::string& benchmark, const References& refs) {
+  if (benchmark == "plate") {
+    const ObserverSeries& tip = outcome_series(o, "tip");
+    if (const auto s = oscillation_stats(tip.time, series_column(tip, 1), 0.0))
+      return std::abs(1.0 / s->frequency / (2.0 * M_PI / o.parameters.value("omega", NAN)) - 1.0);
+  } else if (benchmark == "gate" && !refs.exp_t.empty()) {
+    const ObserverSeries& tip = outcome_series(o, "gate_tip");
+    std::vector<double> x;
+    for (double dx : series_column(tip, 0)) x.push_back(-1000.0 * dx);
+    if (const auto c = compare_curves(tip.time, x, refs.exp_t, refs.exp_x)) return c->rms_error;
+  } else if (benchmark == "FSI2") {
+    const Json m = fsi2_metrics(outcome_series(o, "tip"), outcome_series(o, "forces"), 200.0, 100.0);
+    const Json& th = refs.turek_hron;
+    if (m.contains("amplitude_y") && m.contains("strouhal"))
+      return std::max(std::abs(m["amplitude_y"].get<double>() / th["amplitude_y"].get<double>() - 1.0),
+                      std::abs(m["strouhal"].get<double>() / th["strouhal"].get<double>() - 1.0));
+  }
+  return NAN;
+}
+
+// One point per run, each recorded in the summary.
+std::vector<Point> measure_points(const std::vector<SweepOutcome>& outcomes, const Plan& plan, const References& refs,
+                                  SuiteSummary& summary) {
   std::vector<Point> points;
   for (std::size_t k = 0; k < outcomes.size(); ++k) {
     const SweepOutcome& o = outcomes[k];
-    Point p{benchmark[k], o.run.label, o.cost.value("wall_s", NAN), NAN, false, o.run.config};
-    if (o.completed) {
-      if (p.benchmark == "plate") {
-        const ObserverSeries& tip = outcome_series(o, "tip");
-        if (const auto s = oscillation_stats(tip.time, series_column(tip, 1), 0.0))
-          p.error = std::abs(1.0 / s->frequency / (2.0 * M_PI / o.parameters.value("omega", NAN)) - 1.0);
-      } else if (p.benchmark == "gate" && !exp_t.empty()) {
-        const ObserverSeries& tip = outcome_series(o, "gate_tip");
-        std::vector<double> x;
-        for (double dx : series_column(tip, 0)) x.push_back(-1000.0 * dx);
-        if (const auto c = compare_curves(tip.time, x, exp_t, exp_x)) p.error = c->rms_error;
-      } else if (p.benchmark == "FSI2") {
-        const Json m = fsi2_metrics(outcome_series(o, "tip"), outcome_series(o, "forces"), 200.0, 100.0);
-        if (m.contains("amplitude_y") && m.contains("strouhal"))
-          p.error = std::max(std::abs(m["amplitude_y"].get<double>() / th["amplitude_y"].get<double>() - 1.0),
-                             std::abs(m["strouhal"].get<double>() / th["strouhal"].get<double>() - 1.0));
-      }
-    }
+    Point p{plan.benchmark[k], o.run.label, o.cost.value("wall_s", NAN), NAN, false, o.run.config};
+    if (o.completed) p.error = error_of(o, p.benchmark, refs);
     SuiteRun record;
     record.case_name = o.run.label;
     record.config = o.run.config;
@@ -127,20 +143,32 @@ SuiteSummary run_speed_accuracy_suite(const SuiteContext& ctx) {
     summary.add_run(std::move(record));
     points.push_back(p);
   }
+  return points;
+}
 
-  // Pareto front per benchmark: sorted by time, a point is on the front if it is more accurate than
-  // every faster point.
+// Marks the Pareto front of one benchmark's points (sorted by time, a point is on the front if it is
+// more accurate than every faster point) and returns them sorted by time.
+std::vector<Point*> pareto_front(std::vector<Point>& points, const std::string& name) {
+  std::vector<Point*> mine;
+  for (Point& p : points)
+    if (p.benchmark == name && std::isfinite(p.error) && std::isfinite(p.wall_s)) mine.push_back(&p);
+  std::sort(mine.begin(), mine.end(), [](const Point* a, const Point* b) { return a->wall_s < b->wall_s; });
+  double best = INFINITY;
+  for (Point* p : mine)
+    if (p->error < best) {
+      p->pareto = true;
+      best = p->error;
+    }
+  return mine;
+}
+
+// The cheapest configuration meeting each error target.
+Json recommend(std::vector<Point>& points, const SuiteContext& ctx) {
   const std::map<std::string, std::vector<double>> targets = {
       {"plate", {0.1, 0.05, 0.02}}, {"gate", {8.0, 6.0, 5.0, 4.0}}, {"FSI2", {0.15, 0.10, 0.05}}};
   Json recommendations = Json::array();
   for (const auto& [name, levels] : targets) {
-    std::vector<Point*> mine;
-    for (Point& p : points)
-      if (p.benchmark == name && std::isfinite(p.error) && std::isfinite(p.wall_s)) mine.push_back(&p);
-    std::sort(mine.begin(), mine.end(), [](const Point* a, const Point* b) { return a->wall_s < b->wall_s; });
-    double best = INFINITY;
-    for (Point* p : mine)
-      if (p->error < best) { p->pareto = true; best = p->error; }
+    const std::vector<Point*> mine = pareto_front(points, name);
     if (mine.empty()) continue;
     for (const double target : levels) {
       const auto it = std::find_if(mine.begin(), mine.end(), [&](const Point* p) { return p->error <= target; });
@@ -160,6 +188,10 @@ SuiteSummary run_speed_accuracy_suite(const SuiteContext& ctx) {
       recommendations.push_back(rec);
     }
   }
+  return recommendations;
+}
+
+void write_points(const std::vector<Point>& points, const SuiteContext& ctx, SuiteSummary& summary) {
   CsvTable csv;
   csv.columns = {"benchmark", "index", "wall_s", "error", "pareto"};
   Json table = Json::array();
@@ -172,6 +204,24 @@ SuiteSummary run_speed_accuracy_suite(const SuiteContext& ctx) {
   }
   csv.write(ctx.out_dir / "speed_accuracy.csv");
   summary.extra()["points"] = table;
+}
+
+}  // namespace
+
+SuiteSummary run_speed_accuracy_suite(const SuiteContext& ctx) {
+  SuiteSummary summary("speed-accuracy", ctx.quick, ctx.threads);
+  Plan plan;
+  plan_plate(ctx, plan);
+  plan_gate(ctx, plan, summary);
+  plan_fsi2(ctx, plan);
+  const std::vector<SweepOutcome> outcomes = sweep(ctx, plan.runs, summary);
+  if (outcomes.empty()) {
+    summary.write(ctx.out_dir);
+    return summary;
+  }
+  std::vector<Point> points = measure_points(outcomes, plan, read_references(ctx), summary);
+  const Json recommendations = recommend(points, ctx);  // marks the Pareto fronts first
+  write_points(points, ctx, summary);
   summary.extra()["recommendations"] = recommendations;
   // No pass/fail here: against the gate experiment, coarse configurations can look better by error
   // cancellation (see reports/antoci.md); the chart and the recommendations are the result.
