@@ -323,45 +323,56 @@ void run_convergence_grid(const SuiteContext& ctx, const std::optional<Curve>& e
   summary.extra()["convergence_weights_distance"] = distance;
 }
 
-}  // namespace
+struct Experiment {
+  std::optional<Curve> x, y;  // mm, first sample subtracted
+};
 
-SuiteSummary run_antoci_suite(const SuiteContext& ctx) {
-  SuiteSummary summary("antoci", ctx.quick, ctx.threads);
-  std::optional<Curve> exp_x, exp_y;
+void write_reference_curves(const SuiteContext& ctx, const std::filesystem::path& dir, const Experiment& exp) {
+  for (const char* name : {"Antoci_x.txt", "Antoci_y.txt", "YangEtAl10X.txt", "YangEtAl10Y.txt"})
+    if (const auto c = read_reference_curve(dir / name)) {
+      CsvTable t;
+      t.columns = {"time", "mm"};
+      for (std::size_t k = 0; k < c->t.size(); ++k) t.add_row({c->t[k], c->value[k]});
+      t.write(ctx.out_dir / fmt::format("reference_{}.csv", std::filesystem::path(name).stem().string()));
+    }
+  if (exp.x) {
+    CsvTable t;
+    t.columns = {"time", "x_mm", "y_mm"};
+    for (std::size_t k = 0; k < exp.x->t.size(); ++k)
+      t.add_row({exp.x->t[k], exp.x->value[k], exp.y ? interpolate(exp.y->t, exp.y->value, exp.x->t[k]) : NAN});
+    t.write(ctx.out_dir / "reference_experiment.csv");
+  }
+  // The paper's code run here (time in ms, position in mm).
+  if (const auto peer = read_numeric_table(*ctx.reference_dir / "sphinxsys" / "runs-here" / "elastic_gate_Observer_Position.dat")) {
+    CsvTable t;
+    t.columns = {"time", "x_mm", "y_mm"};
+    const double x0 = peer->columns[1].front(), y0 = peer->columns[2].front();
+    for (std::size_t k = 0; k < peer->columns[0].size(); ++k)
+      t.add_row({peer->columns[0][k] / 1000.0, x0 - peer->columns[1][k], peer->columns[2][k] - y0});
+    t.write(ctx.out_dir / "reference_sphinxsys_here.csv");
+  }
+}
+
+// The experiment's curves (Ex10X, Ex10Y), and every reference curve written beside the run's for the
+// figure (other methods' curves, the paper's code run here); skips said in the summary.
+Experiment read_experiment(const SuiteContext& ctx, SuiteSummary& summary) {
+  Experiment exp;
   if (ctx.reference_dir) {
     const auto dir = *ctx.reference_dir / "antoci2007";
-    exp_x = read_reference_curve(dir / "Ex10X.txt");
-    exp_y = read_reference_curve(dir / "Ex10Y.txt");
-    if (!exp_x) summary.note_skipped("experiment comparison (x)", (dir / "Ex10X.txt").string() + " is missing");
-    if (!exp_y) summary.note_skipped("experiment comparison (y)", (dir / "Ex10Y.txt").string() + " is missing");
-    for (const char* name : {"Antoci_x.txt", "Antoci_y.txt", "YangEtAl10X.txt", "YangEtAl10Y.txt"})
-      if (const auto c = read_reference_curve(dir / name)) {
-        CsvTable t;
-        t.columns = {"time", "mm"};
-        for (std::size_t k = 0; k < c->t.size(); ++k) t.add_row({c->t[k], c->value[k]});
-        t.write(ctx.out_dir / fmt::format("reference_{}.csv", std::filesystem::path(name).stem().string()));
-      }
-    if (exp_x) {
-      CsvTable t;
-      t.columns = {"time", "x_mm", "y_mm"};
-      for (std::size_t k = 0; k < exp_x->t.size(); ++k)
-        t.add_row({exp_x->t[k], exp_x->value[k], exp_y ? interpolate(exp_y->t, exp_y->value, exp_x->t[k]) : NAN});
-      t.write(ctx.out_dir / "reference_experiment.csv");
-    }
-    // The paper's code run here (time in ms, position in mm).
-    if (const auto peer = read_numeric_table(*ctx.reference_dir / "sphinxsys" / "runs-here" / "elastic_gate_Observer_Position.dat")) {
-      CsvTable t;
-      t.columns = {"time", "x_mm", "y_mm"};
-      const double x0 = peer->columns[1].front(), y0 = peer->columns[2].front();
-      for (std::size_t k = 0; k < peer->columns[0].size(); ++k)
-        t.add_row({peer->columns[0][k] / 1000.0, x0 - peer->columns[1][k], peer->columns[2][k] - y0});
-      t.write(ctx.out_dir / "reference_sphinxsys_here.csv");
-    }
+    exp.x = read_reference_curve(dir / "Ex10X.txt");
+    exp.y = read_reference_curve(dir / "Ex10Y.txt");
+    if (!exp.x) summary.note_skipped("experiment comparison (x)", (dir / "Ex10X.txt").string() + " is missing");
+    if (!exp.y) summary.note_skipped("experiment comparison (y)", (dir / "Ex10Y.txt").string() + " is missing");
+    write_reference_curves(ctx, dir, exp);
   } else {
     summary.note_skipped("comparison with the experiment and the peer curves",
                          "no --reference-dir given (pass ../shared/reference-data)");
   }
+  return exp;
+}
 
+// The cases to run: the paper's I-IV (quick: III) and case III's variants.
+std::vector<GateCase> gate_cases(const SuiteContext& ctx) {
   // III-B0: case III with the paper's kernel correction instead of the second-order weights: at four
   // particles through the gate's thickness B0 is softer in bending (oscillating-plate suite), which
   // shows how much of the agreement with the experiment the discretisation error carries.
@@ -387,18 +398,19 @@ SuiteSummary run_antoci_suite(const SuiteContext& ctx) {
     damped_more.damping = 0.2;
     for (const GateCase& c : {undamped, undamped_instantaneous, damped_more}) cases.push_back(c);
   }
-  std::map<std::string, GateResult> results;
-  for (const GateCase& c : cases) keep_result(ctx, run_case(ctx, c, exp_x, exp_y, c.name == "III"), results, summary);
+  return cases;
+}
 
-  const GateResult& III = results.at("III");
-  const Peak peak_x = peak_of(exp_x), peak_y = peak_of(exp_y);
+// Case III against the experiment's peak and curve (a diverged case III is a failed check).
+void check_against_experiment(const SuiteContext& ctx, const GateResult& III, const Experiment& exp, SuiteSummary& summary) {
+  const Peak peak_x = peak_of(exp.x), peak_y = peak_of(exp.y);
   const std::string issue = "issue 5 acceptance; experiment Antoci et al. 2007 (first sample subtracted)";
   if (III.diverged) {
     summary.check_missing("case III runs to t = 0.4 s", "diverged", issue);
-  } else if (exp_x) {
+  } else if (exp.x) {
     summary.check_near("case III peak x [mm]", metric(III, "peak_x_mm"), peak_x.value, 0.1 * peak_x.value,
                        issue + fmt::format(": peak {:.1f} mm +/- 10 %", peak_x.value));
-    if (exp_y)
+    if (exp.y)
       summary.check_near("case III peak y [mm]", metric(III, "peak_y_mm"), peak_y.value, 0.1 * peak_y.value,
                          fmt::format("experiment: vertical peak {:.1f} mm (first sample subtracted) +/- 10 %", peak_y.value));
     if (ctx.quick) {
@@ -414,6 +426,11 @@ SuiteSummary run_antoci_suite(const SuiteContext& ctx) {
                          issue + fmt::format(": {:.3f} s +/- 0.03 s", peak_x.time));
     }
   }
+}
+
+// The damping acts on noise only; multiple steps pay; case III's wall time.
+void check_damping_and_cost(const SuiteContext& ctx, const std::map<std::string, GateResult>& results, SuiteSummary& summary) {
+  const GateResult& III = results.at("III");
   if (!ctx.quick && !III.diverged) {
     // The damping is there to remove particle-scale noise (below), not to change the gate's
     // response: a fourfold coefficient must leave the peak where it is. 1 mm is 2 % of the peak,
@@ -433,9 +450,13 @@ SuiteSummary run_antoci_suite(const SuiteContext& ctx) {
     else
       summary.note_skipped("case III wall-time check", "needs --threads 2 (the acceptance is stated for 2 threads)");
   }
-  if (!ctx.quick) run_convergence_grid(ctx, exp_x, exp_y, results, summary);
-  run_dam_break(ctx, summary);
+}
 
+// The cases beside the paper's CPU times, the experiment's peak, the paper's code run here.
+void add_tables(const SuiteContext& ctx, const std::map<std::string, GateResult>& results, const Experiment& exp,
+                SuiteSummary& summary) {
+  const GateResult& III = results.at("III");
+  const Peak peak_x = peak_of(exp.x), peak_y = peak_of(exp.y);
   const Json refs = read_project_reference(ctx.project_dir, "antoci_gate.json");
   const Json& paper = refs["paper_cpu_s"];
   Json table = Json::array();
@@ -444,8 +465,22 @@ SuiteSummary run_antoci_suite(const SuiteContext& ctx) {
                      {"wall_s", r.wall_s}, {"paper_cpu_s", paper.value(name, NAN)}, {"metrics", r.metrics}});
   summary.extra()["table"] = table;
   if (results.count("IV")) summary.extra()["speedup_III_vs_IV"] = {{"ours", results.at("IV").wall_s / III.wall_s}, {"paper", paper["IV"].get<double>() / paper["III"].get<double>()}};
-  if (exp_x) summary.extra()["experiment_peak"] = {{"x_mm", peak_x.value}, {"time_s", peak_x.time}, {"y_mm", peak_y.value}};
+  if (exp.x) summary.extra()["experiment_peak"] = {{"x_mm", peak_x.value}, {"time_s", peak_x.time}, {"y_mm", peak_y.value}};
   summary.extra()["paper_code_here"] = refs["paper_code_here"];
+}
+
+}  // namespace
+
+SuiteSummary run_antoci_suite(const SuiteContext& ctx) {
+  SuiteSummary summary("antoci", ctx.quick, ctx.threads);
+  const Experiment exp = read_experiment(ctx, summary);
+  std::map<std::string, GateResult> results;
+  for (const GateCase& c : gate_cases(ctx)) keep_result(ctx, run_case(ctx, c, exp.x, exp.y, c.name == "III"), results, summary);
+  check_against_experiment(ctx, results.at("III"), exp, summary);
+  check_damping_and_cost(ctx, results, summary);
+  if (!ctx.quick) run_convergence_grid(ctx, exp.x, exp.y, results, summary);
+  run_dam_break(ctx, summary);
+  add_tables(ctx, results, exp, summary);
   summary.write(ctx.out_dir);
   render_figures(ctx, "plot_antoci.py", summary);
   summary.write(ctx.out_dir);
