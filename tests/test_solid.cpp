@@ -59,8 +59,8 @@ TEST_CASE("A linear velocity field gives the exact deformation rate everywhere, 
   for (std::size_t a = 0; a < b.particles.size(); ++a) REQUIRE((b.particles.dF_dt[a] - L).norm() < 1e-6 * L.norm());
 }
 
-TEST_CASE("A rigid rotation gives zero stress for both materials (objectivity)", "[solid]") {
-  for (const std::string model : {"saint_venant_kirchhoff", "neo_hookean"}) {
+TEST_CASE("A rigid rotation gives zero stress for every material (objectivity)", "[solid]") {
+  for (const std::string& model : elastic_model_names()) {
     const ElasticMaterial m(elastic_model_from_name(model), 1000, 1e6, 0.45);
     for (double angle : {0.1, 1.0, 2.5}) {
       const Mat2 R = rotation(angle);
@@ -154,4 +154,77 @@ TEST_CASE("An unknown model name is refused with every name of the table", "[sol
     for (const std::string& name : elastic_model_names()) CHECK(message.find('"' + name + '"') != std::string::npos);
     CHECK(message.find("'mooney'") != std::string::npos);
   }
+}
+
+namespace {
+
+// Cauchy shear stress of simple shear F = [[1, gamma], [0, 1]] (J = 1).
+double simple_shear_stress(const ElasticMaterial& m, double gamma) {
+  Mat2 F;
+  F << 1.0, gamma, 0.0, 1.0;
+  return (F * m.second_piola_kirchhoff(F) * F.transpose())(0, 1);
+}
+
+ElasticMaterial mooney_rivlin(double c01_fraction) {
+  return ElasticMaterial(MooneyRivlin{c01_fraction}, 1000, 1e6, 0.3);
+}
+
+}  // namespace
+
+TEST_CASE("Mooney-Rivlin: in simple shear the Cauchy shear stress is G gamma at any gamma", "[solid]") {
+  // A classical property of the Mooney-Rivlin solid (Holzapfel 2000, simple shear): with J = 1 the
+  // shear response is linear however large the shear; the normal stresses are not.
+  for (double fraction : {0.0, 0.3, 1.0}) {
+    const ElasticMaterial m = mooney_rivlin(fraction);
+    for (double gamma : {0.01, 0.5, 2.0})
+      CHECK(simple_shear_stress(m, gamma) == Approx(m.shear_modulus() * gamma).epsilon(1e-12));
+  }
+  // Saint Venant-Kirchhoff stiffens in shear (sigma_12 = G gamma + (lambda / 2 + G) gamma^3 at J = 1):
+  // the check above can tell the models apart.
+  const ElasticMaterial svk(SaintVenantKirchhoff{}, 1000, 1e6, 0.3);
+  CHECK(simple_shear_stress(svk, 0.5) > 1.1 * svk.shear_modulus() * 0.5);
+}
+
+TEST_CASE("Mooney-Rivlin with both invariants: S is the derivative of its energy, in and out of plane", "[solid]") {
+  const ElasticMaterial m = mooney_rivlin(0.3);
+  Mat2 F;
+  F << 1.15, 0.1, -0.08, 0.9;
+  const Mat2 P = m.first_piola_kirchhoff(F);
+  for (int i = 0; i < 2; ++i)
+    for (int j = 0; j < 2; ++j) {
+      Mat2 dF = Mat2::Zero();
+      dF(i, j) = 1e-6;
+      const double fd = (m.strain_energy_density(F + dF) - m.strain_energy_density(F - dF)) / 2e-6;
+      CHECK(fd == Approx(P(i, j)).epsilon(1e-6));
+    }
+  // Out of plane: S_zz = dW/dE_zz, from the energy of the 3D invariants with C_zz = 1 + 2 e. The
+  // header's S_zz formula is checked against the same energy written with C_zz free.
+  const auto energy = [&](double c_zz) {
+    const Mat2 C = F.transpose() * F;
+    const double J = std::sqrt(C.determinant() * c_zz);
+    const double I1 = C.trace() + c_zz, I2 = 0.5 * (I1 * I1 - ((C * C).trace() + c_zz * c_zz));
+    const double G = m.shear_modulus(), c10 = 0.5 * 0.7 * G, c01 = 0.5 * 0.3 * G, K = m.bulk_modulus();
+    return c10 * (std::pow(J, -2.0 / 3.0) * I1 - 3.0) + c01 * (std::pow(J, -4.0 / 3.0) * I2 - 3.0) +
+           0.5 * K * std::log(J) * std::log(J);
+  };
+  const double S_zz = 2.0 * (energy(1.0 + 1e-6) - energy(1.0 - 1e-6)) / 2e-6;  // S = 2 dW/dC
+  CHECK(m.out_of_plane_stress(F) == Approx(S_zz).epsilon(1e-6));
+}
+
+TEST_CASE("A scene names Mooney-Rivlin with its parameter; a bad value or a stray parameter is refused", "[solid]") {
+  const auto with = [](const std::string& material) {
+    return R"({
+    "domain": {"lower": [-2, -2], "upper": [3, 3]},
+    "solids": [{"name": "block", "dp": 0.1, "region": {"rectangle": {"lower": [0, 0], "upper": [1, 1]}},
+                "material": {"density": 1000, "youngs_modulus": 1e6, "poisson_ratio": 0.3, )" + material + R"(}}],
+    "end_time": 1})";
+  };
+  LoadedScene s = scene_from(with(R"("model": "mooney_rivlin", "c01_fraction": 0.25)"));
+  const ElasticMaterial& m = s.simulation->solids()[0].material;
+  CHECK(m.model_name() == "mooney_rivlin");
+  CHECK(simple_shear_stress(m, 1.0) == Approx(m.shear_modulus()).epsilon(1e-12));
+  CHECK(m.out_of_plane_stress(Mat2::Identity() * 1.01) == Approx(mooney_rivlin(0.25).out_of_plane_stress(Mat2::Identity() * 1.01)));
+  CHECK_THROWS_WITH(scene_from(with(R"("model": "mooney_rivlin", "c01_fraction": 1.5)")),
+                    Catch::Contains("c01_fraction") && Catch::Contains("[0, 1]") && Catch::Contains("1.5"));
+  CHECK_THROWS_WITH(scene_from(with(R"("model": "neo_hookean", "c01_fraction": 0.2)")), Catch::Contains("c01_fraction"));
 }

@@ -68,12 +68,20 @@ void read_fluid_options(const SceneNode& node, FluidOptions& o) {
 }
 
 ElasticMaterial read_elastic_material(const SceneNode& mat) {
-  const std::string model_name = mat.choice("model", {"saint_venant_kirchhoff", "linear_elastic", "neo_hookean"});
+  const std::string model_name = mat.choice("model", elastic_model_accepted_names());
   const Real rho = mat.positive("density");
   const Real E = mat.positive("youngs_modulus");
   const Real nu = mat.in_range("poisson_ratio", -1.0, 0.5);
+  // The model's own parameters (constitutive/elastic_models.hpp), each in its closed range.
+  const ElasticModel model = make_elastic_model(model_name, [&](const ModelParameter& p) {
+    const std::string key(p.key);
+    const Real value = mat.number_or(key, p.fallback);
+    if (!(value >= p.lower && value <= p.upper))
+      mat.fail(key, fmt::format("expected {} in [{:g}, {:g}], got {:g}", p.meaning, p.lower, p.upper, value));
+    return value;
+  });
   mat.finish();
-  return ElasticMaterial(elastic_model_from_name(model_name), rho, E, nu);
+  return ElasticMaterial(model, rho, E, nu);
 }
 
 }  // namespace

@@ -110,11 +110,14 @@ std::string SceneNode::text(const std::string& key) const {
 }
 
 std::string SceneNode::choice(const std::string& key, std::initializer_list<const char*> allowed) const {
+  return choice(key, std::vector<std::string>(allowed.begin(), allowed.end()));
+}
+std::string SceneNode::choice(const std::string& key, const std::vector<std::string>& allowed) const {
   const std::string value = text(key);
   std::string list;
-  for (const char* a : allowed) {
+  for (const std::string& a : allowed) {
     if (value == a) return value;
-    list += (list.empty() ? "\"" : ", \"") + std::string(a) + "\"";
+    list += (list.empty() ? "\"" : ", \"") + a + "\"";
   }
   fail(key, "unknown value \"" + value + "\", expected one of " + list);
 }

@@ -45,6 +45,7 @@ class SceneNode {
   std::vector<Vec2> vec2_list(const std::string& key) const;
   std::string text(const std::string& key) const;
   std::string choice(const std::string& key, std::initializer_list<const char*> allowed) const;
+  std::string choice(const std::string& key, const std::vector<std::string>& allowed) const;
   std::string choice_or(const std::string& key, std::initializer_list<const char*> allowed, const std::string& fallback) const;
   bool flag_or(const std::string& key, bool fallback) const;
   std::array<bool, 2> flag_pair_or(const std::string& key, std::array<bool, 2> fallback) const;

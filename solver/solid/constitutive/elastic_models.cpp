@@ -1,5 +1,6 @@
 #include "solid/constitutive/elastic_models.hpp"
 
+#include <array>
 #include <optional>
 #include <stdexcept>
 #include <utility>
@@ -31,16 +32,40 @@ std::string expected_names() {
   return text;
 }
 
+template <class Model>
+Model build(const std::function<Real(const ModelParameter&)>& read_parameter) {
+  if constexpr (Model::parameters.empty()) {
+    return Model{};
+  } else {
+    std::array<Real, Model::parameters.size()> values{};
+    for (std::size_t k = 0; k < values.size(); ++k) values[k] = read_parameter(Model::parameters[k]);
+    return Model::from(values);
+  }
+}
+
 }  // namespace
 
-ElasticModel elastic_model_from_name(const std::string& name) {
+ElasticModel make_elastic_model(const std::string& name, const std::function<Real(const ModelParameter&)>& read_parameter) {
   std::optional<ElasticModel> found;
   for_each_model([&](auto model) {
-    for (std::string_view n : decltype(model)::names)
-      if (n == name && !found) found = model;
+    using Model = decltype(model);
+    for (std::string_view n : Model::names)
+      if (n == name && !found) found = build<Model>(read_parameter);
   });
   if (!found) throw std::invalid_argument("unknown solid model '" + name + "', expected " + expected_names());
   return *found;
+}
+
+ElasticModel elastic_model_from_name(const std::string& name) {
+  return make_elastic_model(name, [](const ModelParameter& p) { return p.fallback; });
+}
+
+std::vector<std::string> elastic_model_accepted_names() {
+  std::vector<std::string> names;
+  for_each_model([&](auto model) {
+    for (std::string_view n : decltype(model)::names) names.emplace_back(n);
+  });
+  return names;
 }
 
 std::string elastic_model_name(const ElasticModel& model) {

@@ -5,11 +5,21 @@
 
 #include "core/types.hpp"
 
+#include <string_view>
+
 namespace mrsph {
 
 struct ElasticModuli {
   Real lambda;
   Real shear;  // G
+};
+
+// A model's own scene parameter (beyond the moduli): read from the material's JSON object by its key,
+// `fallback` when absent, refused outside [lower, upper].
+struct ModelParameter {
+  std::string_view key;
+  Real fallback, lower, upper;
+  std::string_view meaning;
 };
 
 // The small-strain stress lambda tr(e) I + 2 G e of a symmetric strain e (plane strain).

@@ -14,6 +14,7 @@ namespace mrsph {
 
 struct NeoHookean {
   static constexpr std::array<std::string_view, 1> names{"neo_hookean"};
+  static constexpr std::array<ModelParameter, 0> parameters{};
 
   static Mat2 second_piola_kirchhoff(const ElasticModuli& m, const Mat2& F) {
     const Mat2 C = F.transpose() * F;

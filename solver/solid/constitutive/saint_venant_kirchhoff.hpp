@@ -12,6 +12,7 @@ namespace mrsph {
 
 struct SaintVenantKirchhoff {
   static constexpr std::array<std::string_view, 2> names{"saint_venant_kirchhoff", "linear_elastic"};
+  static constexpr std::array<ModelParameter, 0> parameters{};
 
   static Mat2 second_piola_kirchhoff(const ElasticModuli& m, const Mat2& F) {
     const Mat2 C = F.transpose() * F;
