@@ -11,6 +11,7 @@
 #include "io/csv_table.hpp"
 #include "metrics/signal_metrics.hpp"
 #include "report/reference_table.hpp"
+#include "suites/gate_experiment.hpp"
 #include "suites/scene_run.hpp"
 
 #include <fmt/format.h>
@@ -34,22 +35,6 @@ struct GateCase {
   std::string kinematics{};       // solid velocity/acceleration the fluid sees; the scene's if empty
 };
 
-struct Curve {
-  std::vector<double> t, value;
-};
-
-// An Antoci-format curve (t [s], displacement [m]) in mm with the first sample subtracted.
-std::optional<Curve> read_reference_curve(const std::filesystem::path& path) {
-  const auto table = read_numeric_table(path);
-  if (!table || table->columns.size() < 2 || table->columns[0].empty()) return std::nullopt;
-  Curve c;
-  const double first = table->columns[1].front();
-  for (std::size_t k = 0; k < table->columns[0].size(); ++k) {
-    c.t.push_back(table->columns[0][k]);
-    c.value.push_back(1000.0 * (table->columns[1][k] - first));
-  }
-  return c;
-}
 
 // The largest value of a curve and when it occurs (the experiment's peak, computed from its curve).
 struct Peak {
@@ -462,7 +447,7 @@ void add_tables(const SuiteContext& ctx, const std::map<std::string, GateResult>
   Json table = Json::array();
   for (const auto& [name, r] : results)
     table.push_back({{"case", name}, {"ratio", r.c.ratio}, {"resolution", r.c.resolution}, {"schedule", r.c.schedule},
-                     {"wall_s", r.wall_s}, {"paper_cpu_s", paper.value(name, NAN)}, {"metrics", r.metrics}});
+                     {"wall_s", r.wall_s}, {"paper_cpu_s", paper.value(name, double(NAN))}, {"metrics", r.metrics}});
   summary.extra()["table"] = table;
   if (results.count("IV")) summary.extra()["speedup_III_vs_IV"] = {{"ours", results.at("IV").wall_s / III.wall_s}, {"paper", paper["IV"].get<double>() / paper["III"].get<double>()}};
   if (exp.x) summary.extra()["experiment_peak"] = {{"x_mm", peak_x.value}, {"time_s", peak_x.time}, {"y_mm", peak_y.value}};

@@ -10,6 +10,7 @@
 #include "metrics/convergence.hpp"
 #include "metrics/signal_metrics.hpp"
 #include "report/reference_table.hpp"
+#include "suites/gate_experiment.hpp"
 #include "suites/scene_run.hpp"
 #include "suites/turek_hron_suite.hpp"
 #include "sweep/sweep.hpp"
@@ -17,6 +18,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <functional>
 
 namespace mrsph::verification {
 
@@ -55,100 +57,87 @@ double gate_peak_mm(const SweepOutcome& o) {
   return peak;
 }
 
-}  // namespace
-
-SuiteSummary run_convergence_suite(const SuiteContext& ctx) {
-  SuiteSummary summary("convergence", ctx.quick, ctx.threads);
+// The ladders (plate; full mode: gate and FSI2) and their runs, in one sweep.
+struct Plan {
   std::vector<SweepRun> runs;
   std::vector<Ladder> ladders;
+  void add(Ladder ladder, const std::function<SweepRun(int)>& run_of) {
+    for (int res : ladder.rungs) {
+      ladder.run_index.push_back(runs.size());
+      runs.push_back(run_of(res));
+    }
+    ladders.push_back(std::move(ladder));
+  }
+};
 
-  Ladder plate{"plate", ctx.quick ? std::vector<int>{4, 8, 16} : std::vector<int>{4, 8, 16, 32}, {}};
-  for (int res : plate.rungs) {
+Plan plan_ladders(const SuiteContext& ctx) {
+  Plan plan;
+  plan.add({"plate", ctx.quick ? std::vector<int>{4, 8, 16} : std::vector<int>{4, 8, 16, 32}, {}}, [](int res) {
     SweepRun r;
     r.label = fmt::format("plate H/dp={}", res);
     r.scene = "oscillating_plate.json";
     r.overrides = {fmt::format("parameters.resolution={}", res), "parameters.periods=3.5"};
     r.config = {{"ladder", "plate"}, {"resolution", res}};
-    plate.run_index.push_back(runs.size());
-    runs.push_back(r);
-  }
-  ladders.push_back(plate);
-  if (!ctx.quick) {
-    Ladder gate{"gate", {4, 8, 16}, {}};
-    for (int res : gate.rungs) {
-      SweepRun r;
-      r.label = fmt::format("gate b/dp_S={}", res);
-      r.scene = "elastic_gate.json";
-      r.overrides = {fmt::format("parameters.resolution={}", res)};
-      r.config = {{"ladder", "gate"}, {"resolution", res}};
-      gate.run_index.push_back(runs.size());
-      runs.push_back(r);
-    }
-    ladders.push_back(gate);
-    Ladder fsi2{"FSI2", {4, 8, 16}, {}};
-    for (int res : fsi2.rungs) {
-      SweepRun r = fsi2_sweep_run(FsiCase{res == 4 ? "III" : fmt::format("III-{}", res), 2, res, "multi_step_position_verlet"}, 200.0);
-      r.config["ladder"] = "FSI2";
-      fsi2.run_index.push_back(runs.size());
-      runs.push_back(r);
-    }
-    ladders.push_back(fsi2);
-  }
+    return r;
+  });
+  if (ctx.quick) return plan;
+  plan.add({"gate", {4, 8, 16}, {}}, [](int res) {
+    SweepRun r;
+    r.label = fmt::format("gate b/dp_S={}", res);
+    r.scene = "elastic_gate.json";
+    r.overrides = {fmt::format("parameters.resolution={}", res)};
+    r.config = {{"ladder", "gate"}, {"resolution", res}};
+    return r;
+  });
+  plan.add({"FSI2", {4, 8, 16}, {}}, [](int res) {
+    SweepRun r = fsi2_sweep_run(FsiCase{res == 4 ? "III" : fmt::format("III-{}", res), 2, res, "multi_step_position_verlet"}, 200.0);
+    r.config["ladder"] = "FSI2";
+    return r;
+  });
+  return plan;
+}
 
-  const std::vector<SweepOutcome> outcomes = sweep(ctx, runs, summary);
-  if (outcomes.empty()) {
-    summary.write(ctx.out_dir);
-    return summary;
+// The metrics of one completed rung.
+Json rung_metrics(const std::string& ladder, const SweepOutcome& o, const std::optional<Curve>& gate_x) {
+  Json m = Json::object();
+  if (ladder == "plate") {
+    m["period"] = plate_period(o);
+    m["period_error"] = m["period"].get<double>() / (2.0 * M_PI / o.parameters.value("omega", NAN)) - 1.0;
+  } else if (ladder == "gate") {
+    m["peak_x_mm"] = gate_peak_mm(o);
+    if (gate_x)
+      if (const auto rms = gate_rms_error_mm(outcome_series(o, "gate_tip"), *gate_x)) m["rms_error_x_mm"] = *rms;
+  } else {
+    m = fsi2_metrics(outcome_series(o, "tip"), outcome_series(o, "forces"), 200.0, 100.0);
   }
+  return m;
+}
 
-  std::optional<std::vector<double>> exp_t, exp_x;
-  if (ctx.reference_dir)
-    if (const auto t = read_numeric_table(*ctx.reference_dir / "antoci2007" / "Ex10X.txt")) {
-      exp_t = t->columns[0];
-      exp_x = std::vector<double>();
-      for (double v : t->columns[1]) exp_x->push_back(1000.0 * (v - t->columns[1].front()));
-    }
-
-  Json results = Json::object();
-  for (const Ladder& ladder : ladders) {
-    std::map<std::string, std::vector<double>> metric_values;
-    for (std::size_t k = 0; k < ladder.rungs.size(); ++k) {
-      const SweepOutcome& o = outcomes[ladder.run_index[k]];
-      SuiteRun record;
-      record.case_name = ladder.name == "FSI2" ? fmt::format("FSI2 bh/dp_S={}", ladder.rungs[k]) : o.run.label;
-      record.config = o.run.config;
-      record.cost = o.cost;
-      record.diverged = o.diverged;
-      record.divergence = o.divergence;
-      if (o.completed) {
-        if (ladder.name == "plate") {
-          record.metrics["period"] = plate_period(o);
-          record.metrics["period_error"] = record.metrics["period"].get<double>() / (2.0 * M_PI / o.parameters.value("omega", NAN)) - 1.0;
-        } else if (ladder.name == "gate") {
-          record.metrics["peak_x_mm"] = gate_peak_mm(o);
-          if (exp_t) {
-            const ObserverSeries& tip = outcome_series(o, "gate_tip");
-            std::vector<double> x;
-            for (double dx : series_column(tip, 0)) x.push_back(-1000.0 * dx);
-            if (const auto c = compare_curves(tip.time, x, *exp_t, *exp_x)) record.metrics["rms_error_x_mm"] = c->rms_error;
-          }
-        } else {
-          record.metrics = fsi2_metrics(outcome_series(o, "tip"), outcome_series(o, "forces"), 200.0, 100.0);
-        }
-      } else {
-        summary.check_missing(record.case_name + " completes", outcome_record(o).dump(), "convergence ladder");
-      }
-      for (auto it = record.metrics.begin(); it != record.metrics.end(); ++it)
-        if (it.value().is_number()) metric_values[it.key()].push_back(it.value().get<double>());
-      summary.add_run(std::move(record));
-    }
-    Json ladder_json = Json::object();
-    for (const auto& [metric, values] : metric_values)
-      if (values.size() == ladder.rungs.size()) ladder_json[metric] = ladder_convergence(values, ladder.rungs);
-    results[ladder.name] = ladder_json;
+// Each rung recorded in the summary; the ladder's observed order and Richardson value per metric.
+Json measure_ladder(const Ladder& ladder, const std::vector<SweepOutcome>& outcomes, const std::optional<Curve>& gate_x,
+                    SuiteSummary& summary) {
+  std::map<std::string, std::vector<double>> metric_values;
+  for (std::size_t k = 0; k < ladder.rungs.size(); ++k) {
+    const SweepOutcome& o = outcomes[ladder.run_index[k]];
+    SuiteRun record;
+    record.case_name = ladder.name == "FSI2" ? fmt::format("FSI2 bh/dp_S={}", ladder.rungs[k]) : o.run.label;
+    record.config = o.run.config;
+    record.cost = o.cost;
+    record.diverged = o.diverged;
+    record.divergence = o.divergence;
+    if (o.completed) record.metrics = rung_metrics(ladder.name, o, gate_x);
+    else summary.check_missing(record.case_name + " completes", outcome_record(o).dump(), "convergence ladder");
+    for (auto it = record.metrics.begin(); it != record.metrics.end(); ++it)
+      if (it.value().is_number()) metric_values[it.key()].push_back(it.value().get<double>());
+    summary.add_run(std::move(record));
   }
-  summary.extra()["convergence"] = results;
+  Json ladder_json = Json::object();
+  for (const auto& [metric, values] : metric_values)
+    if (values.size() == ladder.rungs.size()) ladder_json[metric] = ladder_convergence(values, ladder.rungs);
+  return ladder_json;
+}
 
+void check_convergence(const SuiteContext& ctx, const Json& results, SuiteSummary& summary) {
   // The plate's period must converge at a consistent order: between 1 and 3 for this scheme
   // (first-order consistent gradients at the surface, second-order inside).
   if (results["plate"].contains("period") && results["plate"]["period"].contains("observed_order"))
@@ -162,6 +151,23 @@ SuiteSummary run_convergence_suite(const SuiteContext& ctx) {
                         refs["published_range"]["strouhal"][0], refs["published_range"]["strouhal"][1],
                         refs["published_range"]["source"]);
   }
+}
+
+}  // namespace
+
+SuiteSummary run_convergence_suite(const SuiteContext& ctx) {
+  SuiteSummary summary("convergence", ctx.quick, ctx.threads);
+  const Plan plan = plan_ladders(ctx);
+  const std::vector<SweepOutcome> outcomes = sweep(ctx, plan.runs, summary);
+  if (outcomes.empty()) {
+    summary.write(ctx.out_dir);
+    return summary;
+  }
+  const std::optional<Curve> gate_x = gate_experiment_x(ctx);
+  Json results = Json::object();
+  for (const Ladder& ladder : plan.ladders) results[ladder.name] = measure_ladder(ladder, outcomes, gate_x, summary);
+  summary.extra()["convergence"] = results;
+  check_convergence(ctx, results, summary);
   summary.write(ctx.out_dir);
   render_figures(ctx, "plot_convergence.py", summary);
   summary.write(ctx.out_dir);

@@ -35,15 +35,20 @@ struct FishCase {
   std::string directory() const { return fmt::format("E{:g}_bh{}", youngs_modulus, resolution); }
 };
 
-void run_case(const SuiteContext& ctx, const FishCase& fish, double end_time, SuiteRun& record) {
-  const double E = fish.youngs_modulus;
-  if (ctx.log) ctx.log(fmt::format("fish: {} to t = {:g}", fish.tag(), end_time));
-  // Centre-line particles (the row just above the centre line) over the last 5 time units.
-  CsvTable centre;
+// The run, with the centre line (the particle row just above it) sampled over its last 5 time units.
+struct FishRun {
+  SceneRun run;
+  CsvTable centre;  // time, x0, x, y
+};
+
+FishRun simulate(const SuiteContext& ctx, const FishCase& fish, double end_time) {
+  FishRun out;
+  CsvTable& centre = out.centre;
   centre.columns = {"time", "x0", "x", "y"};
   const double window = 5.0, head_y = 4.0;
-  const std::vector<std::string> overrides = {fmt::format("parameters.E={}", E), fmt::format("parameters.resolution={}", fish.resolution)};
-  SceneRun run = run_scene(ctx, "tethered_fish.json", overrides, [&](const LoadedScene& scene) {
+  const std::vector<std::string> overrides = {fmt::format("parameters.E={}", fish.youngs_modulus),
+                                              fmt::format("parameters.resolution={}", fish.resolution)};
+  out.run = run_scene(ctx, "tethered_fish.json", overrides, [&](const LoadedScene& scene) {
     RunOptions options;
     options.end_time = end_time;
     for (double t = std::max(0.0, end_time - window); t <= end_time + 1e-9; t += 0.05) options.sample_times.push_back(t);
@@ -55,15 +60,14 @@ void run_case(const SuiteContext& ctx, const FishCase& fish, double end_time, Su
     };
     return options;
   });
-  const std::string dir = fish.directory();
-  write_observer_series(run.result.series, ctx.out_dir / dir);
-  centre.write(ctx.out_dir / dir / "centre_line.csv");
+  return out;
+}
 
-  Json& m = record.metrics;
-  const double settle = 20.0;
-  const ObserverSeries& head = series_named(run.result.series, "head");
-  const ObserverSeries& tail = series_named(run.result.series, "tail");
-  const ObserverSeries& forces = series_named(run.result.series, "forces");
+// Amplitudes, frequencies, the Lissajous ratio, sustained flapping and the mean drag.
+void measure_motion(const std::vector<ObserverSeries>& series, double end_time, double settle, Json& m) {
+  const ObserverSeries& head = series_named(series, "head");
+  const ObserverSeries& tail = series_named(series, "tail");
+  const ObserverSeries& forces = series_named(series, "forces");
   if (const auto h = oscillation_stats(head.time, series_column(head, 1), settle)) {
     m["head_amplitude_y"] = h->amplitude;
     m["head_mean_y"] = h->mean;
@@ -98,15 +102,17 @@ void run_case(const SuiteContext& ctx, const FishCase& fish, double end_time, Su
       if (forces.time[k] >= settle) { sum += fx[k]; ++n; }
     m["mean_drag"] = n > 0 ? sum / n : 0.0;
   }
-  if (ctx.log) ctx.log(fmt::format("fish: {}: linear flutter theory", fish.tag()));
-  m["linear_theory"] = fish_linear_theory(run.scene, std::max(0.0, m["mean_drag"].get<double>()), fish.checked_against_paper);
-  // Symmetric start: the lift stays at round-off until the instability breaks the symmetry.
-  {
-    double largest = 0.0;
-    for (std::size_t k = 0; k < forces.time.size() && forces.time[k] < 1.0; ++k) largest = std::max(largest, std::abs(forces.values[k][1]));
-    m["lift_before_t1"] = largest;
-  }
-  // Travelling wave: phase of each centre-line particle's y at the tail frequency over the window.
+}
+
+// Symmetric start: the lift stays at round-off until the instability breaks the symmetry.
+double lift_before_t1(const ObserverSeries& forces) {
+  double largest = 0.0;
+  for (std::size_t k = 0; k < forces.time.size() && forces.time[k] < 1.0; ++k) largest = std::max(largest, std::abs(forces.values[k][1]));
+  return largest;
+}
+
+// Travelling wave: phase of each centre-line particle's y at the tail frequency over the window.
+void measure_travelling_wave(const CsvTable& centre, Json& m) {
   if (m.contains("tail_frequency") && !centre.rows.empty()) {
     const double w = 2.0 * M_PI * m["tail_frequency"].get<double>();
     std::map<double, std::pair<double, double>> projection;  // x0 -> (sum y cos, sum y sin)
@@ -141,6 +147,24 @@ void run_case(const SuiteContext& ctx, const FishCase& fish, double end_time, Su
       m["centre_line_phase_range"] = phases.back() - phases.front();
     }
   }
+}
+
+void run_case(const SuiteContext& ctx, const FishCase& fish, double end_time, SuiteRun& record) {
+  const double E = fish.youngs_modulus;
+  if (ctx.log) ctx.log(fmt::format("fish: {} to t = {:g}", fish.tag(), end_time));
+  const FishRun fish_run = simulate(ctx, fish, end_time);
+  const SceneRun& run = fish_run.run;
+  const std::string dir = fish.directory();
+  write_observer_series(run.result.series, ctx.out_dir / dir);
+  fish_run.centre.write(ctx.out_dir / dir / "centre_line.csv");
+
+  Json& m = record.metrics;
+  const double settle = 20.0;
+  measure_motion(run.result.series, end_time, settle, m);
+  if (ctx.log) ctx.log(fmt::format("fish: {}: linear flutter theory", fish.tag()));
+  m["linear_theory"] = fish_linear_theory(run.scene, std::max(0.0, m["mean_drag"].get<double>()), fish.checked_against_paper);
+  m["lift_before_t1"] = lift_before_t1(series_named(run.result.series, "forces"));
+  measure_travelling_wave(fish_run.centre, m);
   record.case_name = fish.tag();
   record.config = {{"youngs_modulus", E}, {"end_time", end_time}, {"scene", "tethered_fish.json"},
                    {"solid_damping", run.scene.parameters.at("damping")}, {"resolution", fish.resolution},

@@ -12,6 +12,7 @@
 #include "io/csv_table.hpp"
 #include "metrics/signal_metrics.hpp"
 #include "report/reference_table.hpp"
+#include "suites/gate_experiment.hpp"
 #include "suites/scene_run.hpp"
 #include "suites/turek_hron_suite.hpp"
 #include "sweep/sweep.hpp"
@@ -88,17 +89,13 @@ void plan_fsi2(const SuiteContext& ctx, Plan& plan) {
 
 // What each benchmark's error is measured against.
 struct References {
-  std::vector<double> exp_t, exp_x;  // the gate experiment's x [mm], first sample subtracted
-  Json turek_hron;                   // FSI2: A_y/D and St of Turek & Hron (2006)
+  std::optional<Curve> gate_x;  // the gate experiment's x [mm] (gate_experiment.hpp)
+  Json turek_hron;              // FSI2: A_y/D and St of Turek & Hron (2006)
 };
 
 References read_references(const SuiteContext& ctx) {
   References refs;
-  if (ctx.reference_dir)
-    if (const auto t = read_numeric_table(*ctx.reference_dir / "antoci2007" / "Ex10X.txt")) {
-      refs.exp_t = t->columns[0];
-      for (double v : t->columns[1]) refs.exp_x.push_back(1000.0 * (v - t->columns[1].front()));
-    }
+  refs.gate_x = gate_experiment_x(ctx);
   refs.turek_hron = read_project_reference(ctx.project_dir, "turek_hron_fsi2.json")["turek_hron_2006"];
   return refs;
 }
@@ -109,11 +106,8 @@ double error_of(const SweepOutcome& o, const std::string& benchmark, const Refer
     const ObserverSeries& tip = outcome_series(o, "tip");
     if (const auto s = oscillation_stats(tip.time, series_column(tip, 1), 0.0))
       return std::abs(1.0 / s->frequency / (2.0 * M_PI / o.parameters.value("omega", NAN)) - 1.0);
-  } else if (benchmark == "gate" && !refs.exp_t.empty()) {
-    const ObserverSeries& tip = outcome_series(o, "gate_tip");
-    std::vector<double> x;
-    for (double dx : series_column(tip, 0)) x.push_back(-1000.0 * dx);
-    if (const auto c = compare_curves(tip.time, x, refs.exp_t, refs.exp_x)) return c->rms_error;
+  } else if (benchmark == "gate" && refs.gate_x) {
+    return gate_rms_error_mm(outcome_series(o, "gate_tip"), *refs.gate_x).value_or(NAN);
   } else if (benchmark == "FSI2") {
     const Json m = fsi2_metrics(outcome_series(o, "tip"), outcome_series(o, "forces"), 200.0, 100.0);
     const Json& th = refs.turek_hron;
