@@ -215,7 +215,7 @@ void run_dam_break(const SuiteContext& ctx, SuiteSummary& summary) {
   // An inviscid SPH front runs ahead of Martin & Moyce's: their gate took time to lift and the bed
   // had friction (the lead of 10-20 % is common in SPH papers). A sanity bound, not a validation.
   summary.check_range("dam-break front lead over Martin & Moyce (mean relative)",
-                      metrics.value("martin_moyce_a_2_25in_mean_relative_lead", NAN), -0.05, 0.25,
+                      metrics.value("martin_moyce_a_2_25in_mean_relative_lead", double(NAN)), -0.05, 0.25,
                       "Martin & Moyce (1952), reference-data/dam_break_front.json; sanity bound for an inviscid front");
 }
 

@@ -102,7 +102,7 @@ Json rung_metrics(const std::string& ladder, const SweepOutcome& o, const std::o
   Json m = Json::object();
   if (ladder == "plate") {
     m["period"] = plate_period(o);
-    m["period_error"] = m["period"].get<double>() / (2.0 * M_PI / o.parameters.value("omega", NAN)) - 1.0;
+    m["period_error"] = m["period"].get<double>() / (2.0 * M_PI / o.parameters.value("omega", double(NAN))) - 1.0;
   } else if (ladder == "gate") {
     m["peak_x_mm"] = gate_peak_mm(o);
     if (gate_x)

@@ -198,7 +198,7 @@ SuiteSummary run_fish_suite(const SuiteContext& ctx) {
       summary.check_missing(tag + " runs", "diverged", "issue 7");
       continue;
     }
-    summary.check_at_most(tag + " lift before t = 1 (symmetric start)", r.metrics.value("lift_before_t1", NAN), 1e-9,
+    summary.check_at_most(tag + " lift before t = 1 (symmetric start)", r.metrics.value("lift_before_t1", double(NAN)), 1e-9,
                           "the set-up is mirror-symmetric about the centre line; only round-off may break it at first");
     if (ctx.quick) continue;
     if (!cases[k].checked_against_paper) {
@@ -206,12 +206,12 @@ SuiteSummary run_fish_suite(const SuiteContext& ctx) {
       continue;
     }
     auto near = [&](const char* name, const std::string& label, double reference) {
-      const double v = r.metrics.value(name, NAN);
+      const double v = r.metrics.value(name, double(NAN));
       if (std::isnan(v)) summary.check_missing(tag + " " + label, "not measured (no oscillation after t = 20)", paper);
       else summary.check_near(tag + " " + label, v, reference, 0.15 * reference, paper);
     };
     summary.check_range(tag + " sustained flapping: tail half peak-to-peak about its 4-unit moving average, last fifth",
-                        r.metrics.value("tail_oscillation_last_fifth", NAN),
+                        r.metrics.value("tail_oscillation_last_fifth", double(NAN)),
                         0.1, 10.0, "paper: sustained flapping after t = 20");
     near("tail_frequency", "tail frequency", 0.74);
     near("head_amplitude_y", "head vertical amplitude", 0.3);

@@ -105,7 +105,7 @@ double error_of(const SweepOutcome& o, const std::string& benchmark, const Refer
   if (benchmark == "plate") {
     const ObserverSeries& tip = outcome_series(o, "tip");
     if (const auto s = oscillation_stats(tip.time, series_column(tip, 1), 0.0))
-      return std::abs(1.0 / s->frequency / (2.0 * M_PI / o.parameters.value("omega", NAN)) - 1.0);
+      return std::abs(1.0 / s->frequency / (2.0 * M_PI / o.parameters.value("omega", double(NAN))) - 1.0);
   } else if (benchmark == "gate" && refs.gate_x) {
     return gate_rms_error_mm(outcome_series(o, "gate_tip"), *refs.gate_x).value_or(NAN);
   } else if (benchmark == "FSI2") {
@@ -124,7 +124,7 @@ std::vector<Point> measure_points(const std::vector<SweepOutcome>& outcomes, con
   std::vector<Point> points;
   for (std::size_t k = 0; k < outcomes.size(); ++k) {
     const SweepOutcome& o = outcomes[k];
-    Point p{plan.benchmark[k], o.run.label, o.cost.value("wall_s", NAN), NAN, false, o.run.config};
+    Point p{plan.benchmark[k], o.run.label, o.cost.value("wall_s", double(NAN)), NAN, false, o.run.config};
     if (o.completed) p.error = error_of(o, p.benchmark, refs);
     SuiteRun record;
     record.case_name = o.run.label;

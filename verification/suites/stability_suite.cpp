@@ -127,8 +127,8 @@ SuiteSummary run_stability_suite(const SuiteContext& ctx) {
   for (std::size_t k = 0; k < outcomes.size(); ++k) {
     const SweepOutcome& o = outcomes[k];
     const Json record = outcome_record(o);
-    const double t_div = o.diverged && o.divergence.is_object() ? o.divergence.value("time", NAN) : NAN;
-    map.add_row({double(k), double(o.completed), double(o.diverged), double(o.timed_out), t_div, o.cost.value("wall_s", NAN)});
+    const double t_div = o.diverged && o.divergence.is_object() ? o.divergence.value("time", double(NAN)) : NAN;
+    map.add_row({double(k), double(o.completed), double(o.diverged), double(o.timed_out), t_div, o.cost.value("wall_s", double(NAN))});
     Json row = {{"index", k}, {"label", o.run.label}, {"config", o.run.config}, {"end_time", o.run.end_time}};
     row.update(record);
     row["wall_s"] = o.cost.value("wall_s", Json());

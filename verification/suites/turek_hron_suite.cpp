@@ -120,7 +120,7 @@ FsiResult analyse_case(const SuiteContext& ctx, const FsiCase& c, const CaseRun&
                        SuiteSummary& summary) {
   FsiResult out{c};
   out.diverged = !run.divergence.is_null();
-  out.wall_s = run.cost.value("wall_s", NAN);
+  out.wall_s = run.cost.value("wall_s", double(NAN));
   write_observer_series(run.series, ctx.out_dir / ("case_" + c.name));
   out.metrics = fsi2_metrics(series_named(run.series, "tip"), series_named(run.series, "forces"), end_time, settle);
 

@@ -115,7 +115,7 @@ void run_case(const SuiteContext& ctx, double wo, double end_time, SuiteRun& rec
   record.divergence = divergence_record(run);
 }
 
-double metric(const SuiteRun& r, const char* name) { return r.metrics.value(name, NAN); }
+double metric(const SuiteRun& r, const char* name) { return r.metrics.value(name, double(NAN)); }
 
 }  // namespace
 
