@@ -40,7 +40,10 @@ namespace {
 // f^p_i (Eqs. 28, 21, 30) and the density rate's pressure-difference part (the Riemann term, or the
 // delta-SPH diffusion D_i of density_diffusion.hpp); then, with kick_dt != 0, the kick.
 struct PressureInteraction {
+  // Particle i's values, read once (a boundary pair's force is stored in the pair loop, after which
+  // the compiler could not assume i's arrays unchanged), and its sums.
   struct Sum {
+    Real p, rho;
     Real p_relative;      // p_i - 2 p_ref: the pair forces use p_i + p_j - 2 p_ref
     Real vol_scaled;      // V_i, divided by M1 with the pressure lattice correction
     Vec2 acc_prior;       // F^prior_i / m_i + g: the wall pressure's acceleration
@@ -63,14 +66,15 @@ struct PressureInteraction {
   Real diffusion_scale = delta * fluid.h() * fluid.material.sound_speed();
 
   Sum begin(std::size_t i) const {
-    return {f.p[i] - 2.0 * fluid.reference_pressure, scale * f.vol[i], f.force_prior[i] / f.mass[i] + body_acceleration};
+    return {f.p[i], f.rho[i], f.p[i] - 2.0 * fluid.reference_pressure, scale * f.vol[i],
+            f.force_prior[i] / f.mass[i] + body_acceleration};
   }
 
   void inner(Sum& s, std::size_t i, const Neighbor& n) const {
     s.force -= (s.vol_scaled * f.vol[n.j] * (s.p_relative + f.p[n.j]) * n.dW) * n.e;
-    if (fluid.riemann.continuity) s.drho += f.vol[n.j] * fluid.riemann.continuity_term(f.p[i], f.p[n.j]) * n.dW;
+    if (fluid.riemann.continuity) s.drho += f.vol[n.j] * fluid.riemann.continuity_term(s.p, f.p[n.j]) * n.dW;
     if (delta != 0.0)
-      s.diffusion += density_diffusion_pair(f.rho[i], f.rho[n.j], fluid.density_gradient[i], fluid.density_gradient[n.j],
+      s.diffusion += density_diffusion_pair(s.rho, f.rho[n.j], fluid.density_gradient[i], fluid.density_gradient[n.j],
                                             f.vol[n.j], n);
   }
 
@@ -78,17 +82,17 @@ struct PressureInteraction {
     return {*contacts[c].boundary.vol, *contacts[c].boundary.acc_ave, contacts[c].pair_pressure_force};
   }
 
-  void contact(Sum& s, std::size_t i, const Side& b, Index k, const Neighbor& n) const {
-    const Real p_d = wall_pressure(f.p[i], f.rho[i], s.acc_prior, b.abar[n.j], -n.r * n.e);
+  void contact(Sum& s, std::size_t, const Side& b, Index k, const Neighbor& n) const {
+    const Real p_d = wall_pressure(s.p, s.rho, s.acc_prior, b.abar[n.j], -n.r * n.e);
     const Vec2 pair = -(s.vol_scaled * b.vol[n.j] * (s.p_relative + p_d) * n.dW) * n.e;
     b.pair_force[k] = pair;
     s.force += pair;
-    if (fluid.riemann.continuity) s.drho += b.vol[n.j] * fluid.riemann.continuity_term(f.p[i], p_d) * n.dW;
+    if (fluid.riemann.continuity) s.drho += b.vol[n.j] * fluid.riemann.continuity_term(s.p, p_d) * n.dW;
   }
 
   void finish(std::size_t i, const Sum& s) const {
     f.pressure_force[i] = s.force;
-    f.drho_dt[i] = f.rho[i] * s.drho + diffusion_scale * s.diffusion;
+    f.drho_dt[i] = s.rho * s.drho + diffusion_scale * s.diffusion;
     // No particle reads another's velocity here: the kick can follow particle by particle.
     if (kick_dt != 0.0) kick_particle(f, i, kick_dt, body_acceleration);
   }
@@ -99,6 +103,8 @@ struct PressureInteraction {
 // position or density here).
 struct DivergenceAndDissipation {
   struct Sum {
+    Vec2 v;    // v_i, read once (as in PressureInteraction)
+    Real vol;  // V_i
     Real divergence = 0.0;
     Vec2 dissipation = Vec2::Zero();
   };
@@ -116,13 +122,13 @@ struct DivergenceAndDissipation {
 
   Sum begin(std::size_t i) const {
     if (position_dt != 0.0) f.pos[i] += position_dt * f.vel[i];
-    return {};
+    return {f.vel[i], f.vol[i]};
   }
 
   void inner(Sum& s, std::size_t i, const Neighbor& n) const {
-    const Real u = (f.vel[i] - f.vel[n.j]).dot(n.e);
+    const Real u = (s.v - f.vel[n.j]).dot(n.e);
     s.divergence += f.vol[n.j] * u * n.dW;
-    if (riemann.momentum) s.dissipation += (f.vol[i] * f.vol[n.j] * riemann.momentum_coefficient(u) * n.dW) * n.e;
+    if (riemann.momentum) s.dissipation += (s.vol * f.vol[n.j] * riemann.momentum_coefficient(u) * n.dW) * n.e;
   }
 
   Side boundary(std::size_t c) const {
@@ -130,13 +136,13 @@ struct DivergenceAndDissipation {
     return {*contact.boundary.vol, *contact.boundary.vel_ave, *contact.boundary.normal, contacts[c].pair_dissipation_force};
   }
 
-  void contact(Sum& s, std::size_t i, const Side& b, Index k, const Neighbor& n) const {
-    const Vec2 difference = wall_velocity_difference(f.vel[i], b.vbar[n.j]);
+  void contact(Sum& s, std::size_t, const Side& b, Index k, const Neighbor& n) const {
+    const Vec2 difference = wall_velocity_difference(s.v, b.vbar[n.j]);
     s.divergence += b.vol[n.j] * difference.dot(n.e) * n.dW;
     if (!riemann.momentum) return;
     const Vec2 n_f = wall_normal_towards_fluid(n.e, b.normal[n.j]);
     const Real u = difference.dot(n_f);
-    const Vec2 pair = (f.vol[i] * b.vol[n.j] * riemann.momentum_coefficient(u) * n.dW) * n_f;
+    const Vec2 pair = (s.vol * b.vol[n.j] * riemann.momentum_coefficient(u) * n.dW) * n_f;
     b.pair_force[k] = pair;
     s.dissipation += pair;
   }
