@@ -92,8 +92,11 @@ TEST_CASE("For small strain the two materials give the same stress", "[solid]") 
 }
 
 TEST_CASE("The second Piola-Kirchhoff stress is the derivative of the strain energy", "[solid]") {
-  for (const std::string& model : elastic_model_names()) {
-    const ElasticMaterial m(elastic_model_from_name(model), 1000, 1e6, 0.35);
+  std::vector<ElasticModel> models;
+  for (const std::string& model : elastic_model_names()) models.push_back(elastic_model_from_name(model));
+  models.push_back(MooneyRivlin{0.3});  // both invariants (the table's default uses the first only)
+  for (const ElasticModel& model : models) {
+    const ElasticMaterial m(model, 1000, 1e6, 0.35);
     Mat2 F;
     F << 1.15, 0.1, -0.08, 0.9;
     // dW = P : dF for any variation dF.
@@ -185,18 +188,10 @@ TEST_CASE("Mooney-Rivlin: in simple shear the Cauchy shear stress is G gamma at 
   CHECK(simple_shear_stress(svk, 0.5) > 1.1 * svk.shear_modulus() * 0.5);
 }
 
-TEST_CASE("Mooney-Rivlin with both invariants: S is the derivative of its energy, in and out of plane", "[solid]") {
+TEST_CASE("Mooney-Rivlin with both invariants: its out-of-plane stress is the derivative of its energy", "[solid]") {
   const ElasticMaterial m = mooney_rivlin(0.3);
   Mat2 F;
   F << 1.15, 0.1, -0.08, 0.9;
-  const Mat2 P = m.first_piola_kirchhoff(F);
-  for (int i = 0; i < 2; ++i)
-    for (int j = 0; j < 2; ++j) {
-      Mat2 dF = Mat2::Zero();
-      dF(i, j) = 1e-6;
-      const double fd = (m.strain_energy_density(F + dF) - m.strain_energy_density(F - dF)) / 2e-6;
-      CHECK(fd == Approx(P(i, j)).epsilon(1e-6));
-    }
   // Out of plane: S_zz = dW/dE_zz, from the energy of the 3D invariants with C_zz = 1 + 2 e. The
   // header's S_zz formula is checked against the same energy written with C_zz free.
   const auto energy = [&](double c_zz) {
