@@ -113,72 +113,69 @@ PlateResult run_case(const SuiteContext& ctx, const PlateCase& c, SuiteSummary& 
   return out;
 }
 
-}  // namespace
+const std::string kTheory = "Euler-Bernoulli period, plane strain (CASES.md); issue 3 acceptance";
+const std::vector<std::string> kMaterials{"saint_venant_kirchhoff", "neo_hookean"};
+double periods_to_run(const SuiteContext& ctx) { return ctx.quick ? 3.5 : 5.0; }  // two whole cycles at the coarsest rung
 
-SuiteSummary run_oscillating_plate_suite(const SuiteContext& ctx) {
-  SuiteSummary summary("oscillating-plate", ctx.quick, ctx.threads);
-  const std::string theory = "Euler-Bernoulli period, plane strain (CASES.md); issue 3 acceptance";
-  const std::vector<std::string> materials{"saint_venant_kirchhoff", "neo_hookean"};
-  const double periods = ctx.quick ? 3.5 : 5.0;  // at least two whole cycles at the coarsest rung
+// One material's resolution ladder: its runs, their checks (accuracy at the finest rung, energy,
+// convergence) and its row of the convergence table.
+Json run_material_ladder(const SuiteContext& ctx, const std::string& material, std::map<int, PlateResult>& results,
+                         SuiteSummary& summary) {
   const std::vector<int> ladder = ctx.quick ? std::vector<int>{4, 8, 16} : std::vector<int>{4, 8, 16, 32};
+  const double periods = periods_to_run(ctx);
+  const std::string& theory = kTheory;
+  // Quick mode: the whole ladder for SVK, only H/dp = 8 for Neo-Hookean.
+  std::vector<int> rungs = ladder;
+  if (ctx.quick && material == "neo_hookean") rungs = {8};
+  if (!ctx.quick && material == "neo_hookean") rungs = {4, 8, 16};
+  for (int res : rungs) results.emplace(res, run_case(ctx, {material, res, 0.01, 0.3975, periods}, summary));
 
-  Json table = Json::array();
-  std::map<std::string, std::map<int, PlateResult>> by_material;
-  for (const std::string& material : materials) {
-    // Quick mode: the whole ladder for SVK, only H/dp = 8 for Neo-Hookean.
-    std::vector<int> rungs = ladder;
-    if (ctx.quick && material == "neo_hookean") rungs = {8};
-    if (!ctx.quick && material == "neo_hookean") rungs = {4, 8, 16};
-    std::map<int, PlateResult> results;
-    for (int res : rungs) results.emplace(res, run_case(ctx, {material, res, 0.01, 0.3975, periods}, summary));
-
-    by_material[material] = results;
-    const std::string tag = material == "neo_hookean" ? "NH" : "SVK";
-    const PlateResult& finest = results.rbegin()->second;
-    // Within 5 % of the theory at the finest rung, when it is fine enough to ask that (H/dp >= 16).
-    if (finest.c.resolution >= 16) {
-      const std::string name = fmt::format("{} |period error| at H/dp={}", tag, finest.c.resolution);
-      if (finest.diverged || std::isnan(finest.period_error)) summary.check_missing(name, "no period measured", theory);
-      else summary.check_at_most(name, std::abs(finest.period_error), 0.05, theory);
-    }
-    // Energy: no damping is used, so kinetic + strain energy must be conserved; 2 % over the run
-    // (issue 3 acceptance), for every rung.
-    for (const auto& [res, r] : results)
-      summary.check_at_most(fmt::format("{} energy drift at H/dp={}", tag, res), r.energy_drift, 0.02,
-                            "issue 3 acceptance: energy conserved within 2 % without damping");
-    // The error shrinks as the resolution grows.
-    for (auto it = results.begin(); std::next(it) != results.end(); ++it) {
-      const PlateResult& coarse = it->second;
-      const PlateResult& fine = std::next(it)->second;
-      summary.check_at_most(fmt::format("{} period error shrinks from H/dp={} to {}", tag, coarse.c.resolution, fine.c.resolution),
-                            std::abs(fine.period_error) / std::abs(coarse.period_error), 1.0,
-                            "convergence: the error must fall as the resolution grows");
-    }
-    Json row = {{"material", material}};
-    std::vector<double> periods_on_ladder;
-    for (const auto& [res, r] : results) {
-      row[fmt::format("period_res{}", res)] = r.period;
-      row[fmt::format("period_error_res{}", res)] = r.period_error;
-      periods_on_ladder.push_back(r.period);
-    }
-    row["period_theory"] = finest.theory;
-    if (periods_on_ladder.size() >= 3) {
-      const std::size_t n = periods_on_ladder.size();
-      if (const auto c = three_grid_convergence(periods_on_ladder[n - 3], periods_on_ladder[n - 2], periods_on_ladder[n - 1], 2.0)) {
-        row["observed_order"] = c->observed_order;
-        row["extrapolated"] = c->extrapolated;
-        row["gci"] = c->gci;
-        row["monotone"] = c->monotone;
-      }
-      const auto& errors_coarse = results.at(rungs[n - 2]).period_error;
-      row["order_vs_theory"] = order_from_errors(std::abs(errors_coarse), std::abs(finest.period_error), 2.0);
-    }
-    table.push_back(row);
+  const std::string tag = material == "neo_hookean" ? "NH" : "SVK";
+  const PlateResult& finest = results.rbegin()->second;
+  // Within 5 % of the theory at the finest rung, when it is fine enough to ask that (H/dp >= 16).
+  if (finest.c.resolution >= 16) {
+    const std::string name = fmt::format("{} |period error| at H/dp={}", tag, finest.c.resolution);
+    if (finest.diverged || std::isnan(finest.period_error)) summary.check_missing(name, "no period measured", theory);
+    else summary.check_at_most(name, std::abs(finest.period_error), 0.05, theory);
   }
-  summary.extra()["convergence"] = table;
+  // Energy: no damping is used, so kinetic + strain energy must be conserved; 2 % over the run
+  // (issue 3 acceptance), for every rung.
+  for (const auto& [res, r] : results)
+    summary.check_at_most(fmt::format("{} energy drift at H/dp={}", tag, res), r.energy_drift, 0.02,
+                          "issue 3 acceptance: energy conserved within 2 % without damping");
+  // The error shrinks as the resolution grows.
+  for (auto it = results.begin(); std::next(it) != results.end(); ++it) {
+    const PlateResult& coarse = it->second;
+    const PlateResult& fine = std::next(it)->second;
+    summary.check_at_most(fmt::format("{} period error shrinks from H/dp={} to {}", tag, coarse.c.resolution, fine.c.resolution),
+                          std::abs(fine.period_error) / std::abs(coarse.period_error), 1.0,
+                          "convergence: the error must fall as the resolution grows");
+  }
+  Json row = {{"material", material}};
+  std::vector<double> periods_on_ladder;
+  for (const auto& [res, r] : results) {
+    row[fmt::format("period_res{}", res)] = r.period;
+    row[fmt::format("period_error_res{}", res)] = r.period_error;
+    periods_on_ladder.push_back(r.period);
+  }
+  row["period_theory"] = finest.theory;
+  if (periods_on_ladder.size() >= 3) {
+    const std::size_t n = periods_on_ladder.size();
+    if (const auto c = three_grid_convergence(periods_on_ladder[n - 3], periods_on_ladder[n - 2], periods_on_ladder[n - 1], 2.0)) {
+      row["observed_order"] = c->observed_order;
+      row["extrapolated"] = c->extrapolated;
+      row["gci"] = c->gci;
+      row["monotone"] = c->monotone;
+    }
+    const auto& errors_coarse = results.at(rungs[n - 2]).period_error;
+    row["order_vs_theory"] = order_from_errors(std::abs(errors_coarse), std::abs(finest.period_error), 2.0);
+  }
+  return row;
+}
 
-  // At V_f = 0.01 the strains are ~1e-3: both materials reduce to the same linear elasticity, so
-  // their periods must agree to O(strain) at equal resolution.
+// At V_f = 0.01 the strains are ~1e-3: both materials reduce to the same linear elasticity, so
+// their periods must agree to O(strain) at equal resolution.
+void check_materials_agree(std::map<std::string, std::map<int, PlateResult>>& by_material, SuiteSummary& summary) {
   for (const auto& [res, svk] : by_material["saint_venant_kirchhoff"]) {
     const auto it = by_material["neo_hookean"].find(res);
     if (it == by_material["neo_hookean"].end()) continue;
@@ -187,14 +184,18 @@ SuiteSummary run_oscillating_plate_suite(const SuiteContext& ctx) {
                           "both models linearise to S = lambda tr(E) I + 2 G E (paper Eqs. 10, 12-13)");
   }
 
-  // The paper's kernel correction B0 on the same ladder: the second-order weights must bend more
-  // accurately at every rung (gradient_weights.hpp).
+}
+
+// The paper's kernel correction B0 on the same ladder: the second-order weights must bend more
+// accurately at every rung (gradient_weights.hpp).
+void compare_with_b0(const SuiteContext& ctx, const std::map<int, PlateResult>& second_order, SuiteSummary& summary) {
+  const double periods = periods_to_run(ctx);
   const std::vector<int> b0_rungs = ctx.quick ? std::vector<int>{4, 8} : std::vector<int>{4, 8, 16};
   Json b0_table = Json::object();
   for (int res : b0_rungs) {
     PlateCase c{"saint_venant_kirchhoff", res, 0.01, 0.3975, periods, "first_order"};
     const PlateResult b0 = run_case(ctx, c, summary);
-    const PlateResult& second = by_material["saint_venant_kirchhoff"].at(res);
+    const PlateResult& second = second_order.at(res);
     b0_table[fmt::format("period_error_res{}", res)] = b0.period_error;
     summary.check_at_most(fmt::format("second-order weights bend more accurately than B0 at H/dp={} (|error| ratio)", res),
                           std::abs(second.period_error) / std::abs(b0.period_error), 1.0,
@@ -202,9 +203,13 @@ SuiteSummary run_oscillating_plate_suite(const SuiteContext& ctx) {
   }
   summary.extra()["paper_b0_weights"] = b0_table;
 
-  // Large deflection (tip amplitude over half the length) and a nearly incompressible plate.
+}
+
+// Large deflection (tip amplitude over half the length) and a nearly incompressible plate.
+void run_large_and_incompressible(const SuiteContext& ctx, SuiteSummary& summary) {
+  const double periods = periods_to_run(ctx);
   const int res_extra = ctx.quick ? 8 : 16;
-  for (const std::string& material : materials) {
+  for (const std::string& material : kMaterials) {
     if (ctx.quick && material == "saint_venant_kirchhoff") continue;
     const PlateResult large = run_case(ctx, {material, res_extra, 0.05, 0.3975, periods}, summary);
     const std::string tag = material == "neo_hookean" ? "NH" : "SVK";
@@ -216,6 +221,19 @@ SuiteSummary run_oscillating_plate_suite(const SuiteContext& ctx) {
   else summary.check_at_most("nu=0.49 energy drift (stable with the solid time step)", incompressible.energy_drift, 0.02,
                              "issue 3 acceptance: a plate with nu = 0.49 runs stably");
 
+}
+
+}  // namespace
+
+SuiteSummary run_oscillating_plate_suite(const SuiteContext& ctx) {
+  SuiteSummary summary("oscillating-plate", ctx.quick, ctx.threads);
+  Json table = Json::array();
+  std::map<std::string, std::map<int, PlateResult>> by_material;
+  for (const std::string& material : kMaterials) table.push_back(run_material_ladder(ctx, material, by_material[material], summary));
+  summary.extra()["convergence"] = table;
+  check_materials_agree(by_material, summary);
+  compare_with_b0(ctx, by_material["saint_venant_kirchhoff"], summary);
+  run_large_and_incompressible(ctx, summary);
   summary.write(ctx.out_dir);
   render_figures(ctx, "plot_oscillating_plate.py", summary);
   summary.write(ctx.out_dir);
