@@ -18,8 +18,8 @@
 // loop: no virtual call per pair. Where an interaction needs a particle's pairs inside a loop of its
 // own (a solid's sub-step, two passes over a particle's pairs), for_each_pair visits them.
 //
-// To check that no other code iterates over pairs (the README's grep):
-//   grep -rnE '\.of\(|\.offset\(|\.entry\(|\.candidates' solver | grep -v -e solver/neighbor -e solver/interaction
+// That no other code iterates over pairs is checked by scripts/check_house.sh (its grep is in
+// solver/README.md).
 #pragma once
 
 #include "core/parallel.hpp"
