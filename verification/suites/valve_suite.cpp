@@ -42,6 +42,41 @@ WomersleyProfile inflow_profile(const LoadedScene& scene) {
   return w;
 }
 
+// The inflow's centre velocity against the Womersley profile: relative RMS over the run.
+double inflow_relative_rms(const ObserverSeries& s, const WomersleyProfile& analytic) {
+  double e2 = 0.0, r2 = 0.0;
+  for (std::size_t k = 0; k < s.time.size(); ++k) {
+    const double ua = analytic.velocity(0.5 * analytic.channel_height, s.time[k]);
+    e2 += (s.values[k][0] - ua) * (s.values[k][0] - ua);
+    r2 += ua * ua;
+  }
+  return r2 > 0 ? std::sqrt(e2 / r2) : NAN;
+}
+
+// The top tip's motion: final displacement, switching period and amplitudes, mean-crossing statistics.
+void measure_tip(const ObserverSeries& s, double T, Json& m) {
+  std::vector<double> dx, dy;
+  for (const auto& row : s.values) { dx.push_back(1000.0 * row[0]); dy.push_back(1000.0 * row[1]); }
+  m["final_dx_mm"] = dx.back();
+  m["final_dy_mm"] = dy.back();
+  const auto switch_x = switching_period(s.time, dx, T), switch_y = switching_period(s.time, dy, T);
+  if (switch_x && switch_y) {  // the leaflet's main motion: the component with the larger range
+    const bool x_main = switch_x->high_level - switch_x->low_level > switch_y->high_level - switch_y->low_level;
+    const SwitchingPeriod& main = x_main ? *switch_x : *switch_y;
+    if (std::isfinite(main.period)) m["period_s"] = main.period;
+    m["period_component"] = x_main ? "x" : "y";
+    m["period_switches"] = main.switches;
+  }
+  if (switch_x) m["amplitude_x_mm"] = 0.5 * (switch_x->high_level - switch_x->low_level);
+  if (switch_y) m["amplitude_y_mm"] = 0.5 * (switch_y->high_level - switch_y->low_level);
+  if (const auto sy = oscillation_stats(s.time, dy, T)) {
+    m["mean_crossing_period_y_s"] = 1.0 / sy->frequency;
+    m["mean_crossing_amplitude_y_mm"] = sy->amplitude;
+    m["mean_y_mm"] = sy->mean;
+    m["cycles"] = sy->cycles;
+  }
+}
+
 void run_case(const SuiteContext& ctx, double wo, double end_time, SuiteRun& record) {
   if (ctx.log) ctx.log(fmt::format("valve: Wo = {:g} to t = {:g} s", wo, end_time));
   CsvTable frame;
@@ -68,15 +103,7 @@ void run_case(const SuiteContext& ctx, double wo, double end_time, SuiteRun& rec
   const WomersleyProfile analytic = inflow_profile(run.scene);
   Json& m = record.metrics;
   for (const ObserverSeries& s : run.result.series) {
-    if (s.name == "inflow_centre") {
-      double e2 = 0.0, r2 = 0.0;
-      for (std::size_t k = 0; k < s.time.size(); ++k) {
-        const double ua = analytic.velocity(0.5 * analytic.channel_height, s.time[k]);
-        e2 += (s.values[k][0] - ua) * (s.values[k][0] - ua);
-        r2 += ua * ua;
-      }
-      m["inflow_centre_relative_rms"] = r2 > 0 ? std::sqrt(e2 / r2) : NAN;
-    }
+    if (s.name == "inflow_centre") m["inflow_centre_relative_rms"] = inflow_relative_rms(s, analytic);
     if (s.name == "leaflet_gap") {  // smallest distance between the leaflets' particles, in solid spacings
       double closest = INFINITY, at = 0.0;
       for (std::size_t k = 0; k < s.time.size(); ++k)
@@ -84,27 +111,7 @@ void run_case(const SuiteContext& ctx, double wo, double end_time, SuiteRun& rec
       m["closest_leaflet_gap_dp"] = closest / run.scene.parameters.at("dp_solid");
       m["closest_leaflet_gap_time_s"] = at;
     }
-    if (s.name != "top_tip") continue;
-    std::vector<double> dx, dy;
-    for (const auto& row : s.values) { dx.push_back(1000.0 * row[0]); dy.push_back(1000.0 * row[1]); }
-    m["final_dx_mm"] = dx.back();
-    m["final_dy_mm"] = dy.back();
-    const auto switch_x = switching_period(s.time, dx, T), switch_y = switching_period(s.time, dy, T);
-    if (switch_x && switch_y) {  // the leaflet's main motion: the component with the larger range
-      const bool x_main = switch_x->high_level - switch_x->low_level > switch_y->high_level - switch_y->low_level;
-      const SwitchingPeriod& main = x_main ? *switch_x : *switch_y;
-      if (std::isfinite(main.period)) m["period_s"] = main.period;
-      m["period_component"] = x_main ? "x" : "y";
-      m["period_switches"] = main.switches;
-    }
-    if (switch_x) m["amplitude_x_mm"] = 0.5 * (switch_x->high_level - switch_x->low_level);
-    if (switch_y) m["amplitude_y_mm"] = 0.5 * (switch_y->high_level - switch_y->low_level);
-    if (const auto sy = oscillation_stats(s.time, dy, T)) {
-      m["mean_crossing_period_y_s"] = 1.0 / sy->frequency;
-      m["mean_crossing_amplitude_y_mm"] = sy->amplitude;
-      m["mean_y_mm"] = sy->mean;
-      m["cycles"] = sy->cycles;
-    }
+    if (s.name == "top_tip") measure_tip(s, T, m);
   }
   record.case_name = fmt::format("Wo={:g}", wo);
   record.config = {{"womersley_number", wo}, {"end_time", end_time}, {"inflow_period", T},
