@@ -25,12 +25,8 @@ struct ShiftResidue {
   Vec2Array& shift;
   Real coefficient, max_shift;
 
-  // An open boundary's buffer: positions follow the imposed velocity.
-  bool skips(std::size_t i) const {
-    if (f.in_domain(i)) return false;
-    shift[i] = Vec2::Zero();
-    return true;
-  }
+  // An open boundary's buffer: positions follow the imposed velocity (its shift stays zero).
+  bool skips(std::size_t i) const { return !f.in_domain(i); }
   Vec2 begin(std::size_t) const { return Vec2::Zero(); }
   void inner(Vec2& residue, std::size_t, const Neighbor& n) const { residue += (f.vol[n.j] * n.dW) * n.e; }
   Side boundary(std::size_t c) const { return {*contacts[c].boundary.vol}; }
@@ -51,7 +47,7 @@ void shift_towards_uniform_distribution(FluidBody& fluid, const NeighborList& in
   FluidParticles& f = fluid.particles;
   const Real coefficient = 2.0 * alpha * fluid.h() * fluid.h();
   // Shifts are computed from the unshifted positions (cached geometry), then applied.
-  Vec2Array shift(f.size());
+  Vec2Array shift(f.size(), Vec2::Zero());
   sweep_with_contacts(inner, contacts, ShiftResidue{f, contacts, shift, coefficient, max_shift});
   parallel_for_each(f.size(), [&](std::size_t i) { f.pos[i] += shift[i]; }, kGrainSimpleLoop);
 }

@@ -20,4 +20,11 @@ double order_from_errors(double error_coarse, double error_fine, double ratio) {
   return std::log(error_coarse / error_fine) / std::log(ratio);
 }
 
+void write_estimate(const ConvergenceEstimate& c, Json& row) {
+  row["observed_order"] = c.observed_order;
+  row["extrapolated"] = c.extrapolated;
+  row["gci"] = c.gci;
+  row["monotone"] = c.monotone;
+}
+
 }  // namespace mrsph::verification

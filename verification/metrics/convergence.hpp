@@ -6,6 +6,8 @@
 // With a known exact value, the order follows from the errors instead: p = ln(e_coarse / e_fine) / ln r.
 #pragma once
 
+#include "core/json.hpp"
+
 #include <optional>
 
 namespace mrsph::verification {
@@ -19,6 +21,9 @@ struct ConvergenceEstimate {
 
 // Nothing if the three values do not let an order be estimated (f2 == f1, or f2 == f3).
 std::optional<ConvergenceEstimate> three_grid_convergence(double coarse, double medium, double fine, double ratio);
+
+// The estimate into a table row, as observed_order, extrapolated, gci and monotone.
+void write_estimate(const ConvergenceEstimate& c, Json& row);
 
 double order_from_errors(double error_coarse, double error_fine, double ratio);
 

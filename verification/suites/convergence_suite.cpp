@@ -34,12 +34,8 @@ Json ladder_convergence(const std::vector<double>& values, const std::vector<int
   Json j = {{"resolutions", rungs}, {"values", values}};
   if (values.size() >= 3) {
     const std::size_t n = values.size();
-    if (const auto c = three_grid_convergence(values[n - 3], values[n - 2], values[n - 1], 2.0)) {
-      j["observed_order"] = c->observed_order;
-      j["extrapolated"] = c->extrapolated;
-      j["gci"] = c->gci;
-      j["monotone"] = c->monotone;
-    }
+    if (const auto c = three_grid_convergence(values[n - 3], values[n - 2], values[n - 1], 2.0))
+      write_estimate(*c, j);
   }
   return j;
 }

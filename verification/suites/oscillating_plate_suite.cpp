@@ -161,12 +161,8 @@ Json run_material_ladder(const SuiteContext& ctx, const std::string& material, s
   row["period_theory"] = finest.theory;
   if (periods_on_ladder.size() >= 3) {
     const std::size_t n = periods_on_ladder.size();
-    if (const auto c = three_grid_convergence(periods_on_ladder[n - 3], periods_on_ladder[n - 2], periods_on_ladder[n - 1], 2.0)) {
-      row["observed_order"] = c->observed_order;
-      row["extrapolated"] = c->extrapolated;
-      row["gci"] = c->gci;
-      row["monotone"] = c->monotone;
-    }
+    if (const auto c = three_grid_convergence(periods_on_ladder[n - 3], periods_on_ladder[n - 2], periods_on_ladder[n - 1], 2.0))
+      write_estimate(*c, row);
     const auto& errors_coarse = results.at(rungs[n - 2]).period_error;
     row["order_vs_theory"] = order_from_errors(std::abs(errors_coarse), std::abs(finest.period_error), 2.0);
   }

@@ -135,12 +135,8 @@ Json convergence_table(const CylinderResults& results, const std::vector<Benchma
       }
       if (!any) continue;
       if (values.size() == 3)
-        if (const auto c = three_grid_convergence(values[0], values[1], values[2], 2.0)) {
-          row["observed_order"] = c->observed_order;
-          row["extrapolated"] = c->extrapolated;
-          row["gci"] = c->gci;
-          row["monotone"] = c->monotone;
-        }
+        if (const auto c = three_grid_convergence(values[0], values[1], values[2], 2.0))
+          write_estimate(*c, row);
       table.push_back(row);
     }
   }
