@@ -7,6 +7,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_reduce.h>
 #include <tbb/partitioner.h>
+#include <tbb/task_group.h>
 
 #include <algorithm>
 #include <cstddef>
@@ -16,25 +17,36 @@ namespace mrsph {
 
 // Smallest chunk worth a task. A parallel loop costs microseconds to start, so a loop whose body
 // visits neighbours (tens of pairs per particle) pays off from about a hundred particles, and a
-// plain per-particle update only from a few thousand. The solid runs tens of sub-steps per
-// acoustic step on a few hundred particles: the difference matters there.
+// plain per-particle update only from a few thousand. A solid's loops outside its sub-steps (the
+// fluid's force on it, its step criterion) run once per fluid step over a few hundred particles:
+// on one thread below a thousand. Its sub-steps' loops, tens of thousands a run, go through a
+// LoopTeam (core/loop_team.hpp) beside the fluid (run_side_by_side).
 inline constexpr std::size_t kGrainNeighbourLoop = 128;
 inline constexpr std::size_t kGrainSimpleLoop = 4096;
+inline constexpr std::size_t kGrainSolidLoop = 1024;
+
+// How a loop's range is shared among the threads.
+enum class Sharing {
+  Static,   // one contiguous block per thread: the least overhead, and each thread keeps the same
+            // particles from one loop to the next
+  Balanced  // blocks taken by whichever thread is free: for a loop that runs beside other work
+};
 
 template <class Body>
-void parallel_for_each(std::size_t n, Body&& body, std::size_t grain = kGrainNeighbourLoop) {
+void parallel_for_each(std::size_t n, Body&& body, std::size_t grain = kGrainNeighbourLoop,
+                       Sharing sharing = Sharing::Static) {
   if (n <= grain) {
     for (std::size_t i = 0; i < n; ++i) body(i);
     return;
   }
-  // Static partitioning: one contiguous block per thread, the least scheduling overhead for the
-  // even work of particle loops.
-  tbb::parallel_for(
-      tbb::blocked_range<std::size_t>(0, n, grain),
-      [&](const tbb::blocked_range<std::size_t>& r) {
-        for (std::size_t i = r.begin(); i != r.end(); ++i) body(i);
-      },
-      tbb::static_partitioner());
+  const tbb::blocked_range<std::size_t> range(0, n, grain);
+  const auto loop = [&](const tbb::blocked_range<std::size_t>& r) {
+    for (std::size_t i = r.begin(); i != r.end(); ++i) body(i);
+  };
+  if (sharing == Sharing::Balanced)
+    tbb::parallel_for(range, loop, tbb::auto_partitioner());
+  else
+    tbb::parallel_for(range, loop, tbb::static_partitioner());
 }
 
 // Maximum of value(i) over [0, n); returns `lowest` for n == 0. value(i) may also update particle i.
@@ -53,6 +65,18 @@ double parallel_max(std::size_t n, Value&& value, double lowest = -std::numeric_
         return m;
       },
       [](double a, double b) { return std::max(a, b); }, tbb::static_partitioner());
+}
+
+// Runs two independent pieces of work side by side: `shared`, whose loops take up whatever threads
+// are free (Sharing::Balanced), and `single`, which starts on one thread (a solid's sub-steps, whose
+// loop team takes helpers as they come free). Neither may read what the other writes. With one
+// thread: `shared`, then `single`.
+template <class Shared, class Single>
+void run_side_by_side(Shared&& shared, Single&& single) {
+  tbb::task_group group;
+  group.run([&] { single(); });
+  shared();
+  group.wait();
 }
 
 }  // namespace mrsph

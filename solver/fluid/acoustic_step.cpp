@@ -169,12 +169,13 @@ void kick(FluidBody& fluid, Real dt, const Vec2& body_acceleration) {
 }
 
 void add_velocity_divergence_and_dissipation(FluidBody& fluid, const NeighborList& inner,
-                                             std::vector<FluidContact>& contacts, Real position_dt, Real density_dt) {
+                                             std::vector<FluidContact>& contacts, Real position_dt, Real density_dt,
+                                             Sharing sharing) {
   const RiemannDissipation& riemann = fluid.riemann;
   for (FluidContact& c : contacts)
     c.pair_dissipation_force.assign(riemann.momentum ? c.pairs.pair_count() : 0, Vec2::Zero());
   sweep_with_contacts(inner, contacts,
-                      DivergenceAndDissipation{fluid.particles, riemann, contacts, position_dt, density_dt});
+                      DivergenceAndDissipation{fluid.particles, riemann, contacts, position_dt, density_dt}, sharing);
   for (FluidContact& c : contacts) {
     c.boundary_dissipation_reaction.assign(c.pairs_of_boundary.size(), Vec2::Zero());
     if (riemann.momentum) accumulate_boundary_reaction(c, c.pair_dissipation_force, c.boundary_dissipation_reaction);
@@ -187,8 +188,9 @@ void acoustic_first_half(FluidBody& fluid, const NeighborList& inner, std::vecto
   compute_pressure_interaction(fluid, inner, contacts, body_acceleration, dt);
 }
 
-void acoustic_second_half(FluidBody& fluid, const NeighborList& inner, std::vector<FluidContact>& contacts, Real dt) {
-  add_velocity_divergence_and_dissipation(fluid, inner, contacts, 0.5 * dt, 0.5 * dt);
+void acoustic_second_half(FluidBody& fluid, const NeighborList& inner, std::vector<FluidContact>& contacts, Real dt,
+                          Sharing sharing) {
+  add_velocity_divergence_and_dissipation(fluid, inner, contacts, 0.5 * dt, 0.5 * dt, sharing);
 }
 
 void accumulate_boundary_reaction(const FluidContact& contact, const Vec2Array& pair_force, Vec2Array& reaction) {

@@ -20,13 +20,16 @@
 // composes differently.
 #pragma once
 
+#include "core/parallel.hpp"
 #include "fluid/fluid_body.hpp"
 
 namespace mrsph {
 
 void acoustic_first_half(FluidBody& fluid, const NeighborList& inner, std::vector<FluidContact>& contacts, Real dt,
                          const Vec2& body_acceleration);
-void acoustic_second_half(FluidBody& fluid, const NeighborList& inner, std::vector<FluidContact>& contacts, Real dt);
+// `sharing`: Balanced where the pass runs beside the solids' sub-steps (core/parallel.hpp).
+void acoustic_second_half(FluidBody& fluid, const NeighborList& inner, std::vector<FluidContact>& contacts, Real dt,
+                          Sharing sharing = Sharing::Static);
 
 // rho += dt_density drho/dt; p = EoS(rho); V = m / rho; r += dt_position v.
 void advance_density_and_position(FluidBody& fluid, Real dt_density, Real dt_position);
@@ -42,7 +45,7 @@ void kick(FluidBody& fluid, Real dt, const Vec2& body_acceleration);
 // same pass, where non-zero: r += position_dt v before, rho += density_dt drho/dt after.
 void add_velocity_divergence_and_dissipation(FluidBody& fluid, const NeighborList& inner,
                                              std::vector<FluidContact>& contacts, Real position_dt = 0.0,
-                                             Real density_dt = 0.0);
+                                             Real density_dt = 0.0, Sharing sharing = Sharing::Static);
 
 // Sum over the pairs of each boundary particle of -pair_force: the reaction of the fluid on the
 // boundary, exactly opposite to what the fluid received (pair by pair).

@@ -14,7 +14,7 @@ void set_force_from_fluid(const FluidContact& contact, SolidParticles& solid) {
       if (has_viscous) force -= contact.pair_viscous_force[k];
     });
     solid.force_prior[a] = force;
-  });
+  }, kGrainSolidLoop);
 }
 
 Vec2 total_force_on_boundary(const FluidContact& contact) {

@@ -126,14 +126,14 @@ MRSPH_INLINE_VISIT void visit_with_contacts(const NeighborList& inner, Contacts&
 // The parallel sweep over a fluid's inner list and its contacts (`contacts`: a range of structs with
 // a NeighborList `pairs`, fluid particle -> boundary particle).
 template <class Op, class Contacts>
-void sweep_with_contacts(const NeighborList& inner, Contacts& contacts, Op&& op) {
+void sweep_with_contacts(const NeighborList& inner, Contacts& contacts, Op&& op, Sharing sharing = Sharing::Static) {
   parallel_for_each(inner.size(), [&](std::size_t i) {
     if constexpr (requires { op.skips(i); })
       if (op.skips(i)) return;
     auto sum = op.begin(i);
     visit_with_contacts(inner, contacts, i, op, sum);
     op.finish(i, sum);
-  });
+  }, kGrainNeighbourLoop, sharing);
 }
 
 }  // namespace mrsph
