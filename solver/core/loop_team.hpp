@@ -92,7 +92,7 @@ class LoopTeam {
     const std::uint64_t loop = ++loops_ & ((std::uint64_t(1) << 24) - 1);
     claim_.store(loop << 40 | chunks, std::memory_order_release);  // makes the fields above visible
     run_chunks(loop, false);
-    while (done_.load(std::memory_order_acquire) < chunks) pause();
+    for (unsigned spins = 0; done_.load(std::memory_order_acquire) < chunks; ++spins) wait_a_little(spins);
   }
 
   // A chunk at least as large as asked for and large enough that the count fits the claim word.
@@ -125,13 +125,14 @@ class LoopTeam {
     // must not spin there for a stop that only it can give.
     if (std::this_thread::get_id() == leader_) return;
     std::uint64_t seen = 0;
-    while (!stop_.load(std::memory_order_acquire)) {
+    for (unsigned spins = 0; !stop_.load(std::memory_order_acquire);) {
       const std::uint64_t loop = claim_.load(std::memory_order_acquire) >> 40;
       if (loop != seen) {
         seen = loop;
         run_chunks(loop, true);
+        spins = 0;
       } else {
-        pause();
+        wait_a_little(spins++);
       }
     }
   }
@@ -141,12 +142,16 @@ class LoopTeam {
     group.wait();
   }
 
-  static void pause() {
+  // A pause instruction between loops; after a few thousand (tens of microseconds), yield the core,
+  // so that a helper on a machine with more threads than cores does not hold back the leader.
+  static void wait_a_little(unsigned spins) {
 #if defined(__x86_64__) || defined(__i386__)
-    __builtin_ia32_pause();
-#else
-    std::this_thread::yield();
+    if (spins < 4096) {
+      __builtin_ia32_pause();
+      return;
+    }
 #endif
+    std::this_thread::yield();
   }
 
   static constexpr std::uint64_t kMask = (1u << 20) - 1;

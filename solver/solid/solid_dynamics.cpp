@@ -238,10 +238,6 @@ void deformation_pass(LoopTeam& team, SolidBody& solid, Real h_end, Real h_next,
   });
 }
 
-}  // namespace
-
-namespace {
-
 // advance_solids with the loops run by `team`.
 long long advance_solids_with(LoopTeam& team, std::span<SolidBody> solids, std::span<SolidContact> contacts, Real t,
                               Real dt, const std::function<Vec2(Real)>& body_acceleration) {

@@ -78,7 +78,7 @@ Real PositionVerletSchedule::advance(Simulation& sim, Real max_step) {
     for (SolidBody& solid : sim.solids()) begin_kinematics_average(solid.particles);
     // The solids' sub-steps read of the fluid only the forces just set; the fluid's second half reads
     // of the solids only their volumes, normals and the previous step's averaged kinematics. So the
-    // two run side by side, the solids' small loops on one thread.
+    // two run side by side; the solids' loops take the other thread when it is free (LoopTeam).
     run_side_by_side([&] { acoustic_second_half(fluid, inner, contacts, dt, Sharing::Balanced); },
                      [&] { sim.steps.solid += integrate_solids_over(sim, sim.time, dt); });
     for (SolidBody& solid : sim.solids()) end_kinematics_average(solid.particles, dt, sim.solid_kinematics);
