@@ -14,14 +14,18 @@ namespace {
 struct KernelSum {
   struct Side {
     const RealArray& vol;
+    const NeighborList& pairs;
   };
   const FluidParticles& f;
+  const NeighborList& inner_list;
   const std::vector<FluidContact>& contacts;
   Real rho0;
 
-  void inner(Real& sum, std::size_t, const Neighbor& n) const { sum += n.W * f.mass[n.j] / rho0; }
-  Side boundary(std::size_t c) const { return {*contacts[c].boundary.vol}; }
-  void contact(Real& sum, std::size_t, const Side& b, Index, const Neighbor& n) const { sum += n.W * b.vol[n.j]; }
+  void inner(Real& sum, std::size_t, const Neighbor& n) const { sum += inner_list.W(n) * f.mass[n.j] / rho0; }
+  Side boundary(std::size_t c) const { return {*contacts[c].boundary.vol, contacts[c].pairs}; }
+  void contact(Real& sum, std::size_t, const Side& b, Index, const Neighbor& n) const {
+    sum += b.pairs.W(n) * b.vol[n.j];
+  }
 };
 
 Real summation_density(const FluidBody& fluid, const NeighborList& inner, const std::vector<FluidContact>& contacts,
@@ -30,7 +34,7 @@ Real summation_density(const FluidBody& fluid, const NeighborList& inner, const 
   const Real rho0 = fluid.material.rho0();
   const Real v0_i = f.mass[i] / rho0;
   Real sum = fluid.kernel.W0() * v0_i;
-  KernelSum op{f, contacts, rho0};
+  KernelSum op{f, inner, contacts, rho0};
   visit_with_contacts(inner, contacts, i, op, sum);
   return rho0 / fluid.lattice_number_density * sum / v0_i;
 }

@@ -11,13 +11,8 @@ namespace mrsph {
 namespace {
 
 using AcceptedPair = NeighborList::AcceptedPair;
+using RangeScratch = NeighborList::RangeScratch;
 
-// A search task's scratch: the squared distances of one range of candidates, and the offsets of
-// those within the cutoff.
-struct RangeScratch {
-  std::vector<Real> r2;
-  std::vector<std::uint32_t> kept;
-};
 
 // Writes to out[used...] the pairs of query i (at xi) with the target particles k in
 // [k_begin, k_end), shifted by `image`, that lie within the cutoff (not i itself where the query set
@@ -54,53 +49,75 @@ std::size_t append_pairs_in_range(const CellGrid& target, Index k_begin, Index k
 
 }  // namespace
 
+// Fixed chunks of queries, each searched by one task into its own list of accepted pairs; then the
+// offsets, and each chunk's pairs get their kernel gradients as they are written to their place. The
+// result is independent of the thread count. The order of a particle's neighbours follows the cell
+// layout of the target, which depends only on the positions.
+constexpr std::size_t kChunk = 256;
+
+std::size_t NeighborList::search_chunk(const Vec2Array& queries, const ListRequest& request, std::size_t c,
+                                       RangeScratch& scratch, Index* counts) {
+  const CellGrid& target = *request.target;
+  const DomainBox& box = target.box();
+  const Real cutoff2 = request.kernel.cutoff() * request.kernel.cutoff();
+  std::size_t used = 0;
+  const std::size_t begin = c * kChunk, end = std::min(queries.size(), begin + kChunk);
+  for (std::size_t i = begin; i < end; ++i) {
+    const Vec2 xi = box.wrap(queries[i]);
+    if (!target.within_reach(xi)) continue;  // counts[i] stays 0
+    const std::size_t before = used;
+    target.for_each_run_near(xi, [&](Index k_begin, Index k_end, const Vec2& image) {
+      used = append_pairs_in_range(target, k_begin, k_end, image, xi, i, request.exclude_self && image.isZero(),
+                                   cutoff2, scratch, chunk_pairs_[c], used);
+    });
+    counts[i] = static_cast<Index>(used - before);
+  }
+  return used;
+}
+
+void NeighborList::fill_chunk(std::size_t c, std::size_t used) {
+  Neighbor* to = entries_.data() + offsets_[c * kChunk];
+  for (std::size_t m = 0; m < used; ++m) {
+    const AcceptedPair& pair = chunk_pairs_[c][m];
+    Neighbor& nb = *to++;
+    nb.j = pair.j;
+    nb.r = std::sqrt(pair.r2);
+    Real w_not_stored;
+    kernel_.values(nb.r, w_not_stored, nb.dW);
+    // Coincident particles of different bodies: no direction; dW is zero at r = 0.
+    nb.e = nb.r > 0.0 ? Vec2(pair.d * (1.0 / nb.r)) : Vec2::Zero();
+  }
+}
+
 void NeighborList::build(const Vec2Array& queries, const CellGrid& target, const WendlandC2& kernel,
                          bool exclude_self) {
-  const std::size_t n = queries.size();
-  const Real cutoff2 = kernel.cutoff() * kernel.cutoff();
-  const DomainBox& box = target.box();
+  const ListRequest request{this, &target, kernel, exclude_self};
+  build_lists(queries, std::span<const ListRequest>(&request, 1));
+}
 
-  // Fixed chunks of queries, each searched by one task into its own list of accepted pairs; then
-  // the offsets, and each chunk's pairs get their kernel values as they are written to their
-  // place. The result is independent of the thread count. The order of a particle's neighbours
-  // follows the cell layout of the target, which depends only on the positions.
-  constexpr std::size_t kChunk = 256;
+void build_lists(const Vec2Array& queries, std::span<const ListRequest> requests) {
+  const std::size_t n = queries.size(), lists = requests.size();
   const std::size_t chunks = (n + kChunk - 1) / kChunk;
-  if (chunk_pairs_.size() < chunks) chunk_pairs_.resize(chunks);
-  std::vector<Index> counts(n, 0);
-  std::vector<std::size_t> chunk_used(chunks, 0);
-
+  std::vector<std::vector<Index>> counts(lists, std::vector<Index>(n, 0));
+  std::vector<std::vector<std::size_t>> chunk_used(lists, std::vector<std::size_t>(chunks, 0));
+  for (const ListRequest& request : requests) {
+    request.list->kernel_ = request.kernel;
+    if (request.list->chunk_pairs_.size() < chunks) request.list->chunk_pairs_.resize(chunks);
+  }
   tbb::parallel_for(std::size_t(0), chunks, [&](std::size_t c) {
     RangeScratch scratch;
-    std::size_t used = 0;
-    const std::size_t begin = c * kChunk, end = std::min(n, begin + kChunk);
-    for (std::size_t i = begin; i < end; ++i) {
-      const Vec2 xi = box.wrap(queries[i]);
-      if (!target.within_reach(xi)) continue;  // counts[i] stays 0
-      const std::size_t before = used;
-      target.for_each_run_near(xi, [&](Index k_begin, Index k_end, const Vec2& image) {
-        used = append_pairs_in_range(target, k_begin, k_end, image, xi, i, exclude_self && image.isZero(), cutoff2,
-                                     scratch, chunk_pairs_[c], used);
-      });
-      counts[i] = static_cast<Index>(used - before);
-    }
-    chunk_used[c] = used;
+    for (std::size_t l = 0; l < lists; ++l)
+      chunk_used[l][c] = requests[l].list->search_chunk(queries, requests[l], c, scratch, counts[l].data());
   });
-
-  offsets_.assign(n + 1, 0);
-  for (std::size_t i = 0; i < n; ++i) offsets_[i + 1] = offsets_[i] + counts[i];
-  entries_.resize(offsets_[n]);
-  tbb::parallel_for(std::size_t(0), chunks, [&](std::size_t c) {
-    Neighbor* to = entries_.data() + offsets_[c * kChunk];
-    for (std::size_t m = 0; m < chunk_used[c]; ++m) {
-      const AcceptedPair& pair = chunk_pairs_[c][m];
-      Neighbor& nb = *to++;
-      nb.j = pair.j;
-      nb.r = std::sqrt(pair.r2);
-      kernel.values(nb.r, nb.W, nb.dW);
-      // Coincident particles of different bodies: no direction; W counts, dW is zero at r = 0.
-      nb.e = nb.r > 0.0 ? Vec2(pair.d * (1.0 / nb.r)) : Vec2::Zero();
-    }
+  for (std::size_t l = 0; l < lists; ++l) {
+    NeighborList& list = *requests[l].list;
+    list.offsets_.assign(n + 1, 0);
+    for (std::size_t i = 0; i < n; ++i) list.offsets_[i + 1] = list.offsets_[i] + counts[l][i];
+    list.entries_.resize(list.offsets_[n]);
+  }
+  tbb::parallel_for(std::size_t(0), chunks * lists, [&](std::size_t task) {
+    const std::size_t l = task % lists, c = task / lists;
+    requests[l].list->fill_chunk(c, chunk_used[l][c]);
   });
 }
 

@@ -1,4 +1,4 @@
-// Compressed-sparse-row neighbour lists with the kernel values cached per pair. Built once per
+// Compressed-sparse-row neighbour lists with the kernel gradients cached per pair. Built once per
 // advection step (fluid) or once in the reference configuration (solid), then reused: the cached
 // geometry does not follow the particles during acoustic or solid sub-steps (dual-criteria time
 // stepping, Zhang et al. 2020).
@@ -8,19 +8,38 @@
 #include "kernel/wendland_c2.hpp"
 #include "neighbor/cell_grid.hpp"
 
+#include <cstdint>
 #include <span>
 #include <vector>
 
 namespace mrsph {
 
-// One pair (i, j) seen from i: e points from j to i, r = |r_i - r_j|, W and dW = dW/dr at r.
+// One pair (i, j) seen from i: e points from j to i, r = |r_i - r_j|, dW = dW/dr at r. W itself is
+// not stored (NeighborList::W): only the density summation, once per advection step, needs it,
+// while every pass reads the entries (40 bytes instead of 48).
 struct Neighbor {
   Index j;
   Real r;
-  Real W;
   Real dW;
   Vec2 e;
 };
+
+class NeighborList;
+
+// One list of a joint build (build_lists): the neighbours of the queries among `target`'s particles
+// within the kernel's support; with `exclude_self` the query set is the target set and the pair
+// (i, i) is skipped (its periodic images are kept).
+struct ListRequest {
+  NeighborList* list;
+  const CellGrid* target;
+  WendlandC2 kernel;
+  bool exclude_self;
+};
+
+// Builds several lists of the same queries in one pass: each search task takes a chunk of queries
+// for every list, so a fluid and its contacts cost two parallel loops in all instead of two each.
+// Every list is the one NeighborList::build gives.
+void build_lists(const Vec2Array& queries, std::span<const ListRequest> requests);
 
 class NeighborList {
  public:
@@ -32,10 +51,15 @@ class NeighborList {
   Index offset(std::size_t i) const { return offsets_[i]; }
   const Neighbor& entry(std::size_t k) const { return entries_[k]; }
 
-  // Neighbours of each query position among the particles of `target` within the kernel's
-  // support. With `exclude_self`, the query set is the target set and the pair (i, i) is skipped
-  // (its periodic images are kept).
+  // This list alone (ListRequest says what it holds).
   void build(const Vec2Array& queries, const CellGrid& target, const WendlandC2& kernel, bool exclude_self);
+
+  // W at the pair's distance, with the kernel the list was built with (the same bits as a stored W).
+  Real W(const Neighbor& n) const {
+    Real w, dw;
+    kernel_.values(n.r, w, dw);
+    return w;
+  }
 
   // A pair accepted by the search, before its kernel values: j, |r_i - r_j|^2 and r_i - r_j.
   struct AcceptedPair {
@@ -43,10 +67,24 @@ class NeighborList {
     Real r2;
     Vec2 d;
   };
+  // A search task's scratch: the squared distances of one range of candidates, and the offsets of
+  // those within the cutoff.
+  struct RangeScratch {
+    std::vector<Real> r2;
+    std::vector<std::uint32_t> kept;
+  };
 
  private:
+  friend void build_lists(const Vec2Array& queries, std::span<const ListRequest> requests);
+  // The accepted pairs of chunk c of the queries into chunk_pairs_[c] and their counts; returns how many.
+  std::size_t search_chunk(const Vec2Array& queries, const ListRequest& request, std::size_t c, RangeScratch& scratch,
+                           Index* counts);
+  // Chunk c's pairs to their place in entries_, with their kernel gradients.
+  void fill_chunk(std::size_t c, std::size_t used);
+
   std::vector<Index> offsets_;
   std::vector<Neighbor> entries_;
+  WendlandC2 kernel_{1.0};
   std::vector<std::vector<AcceptedPair>> chunk_pairs_;  // reused between builds: no reallocation
 };
 

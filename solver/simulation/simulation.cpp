@@ -193,10 +193,12 @@ void Simulation::build_pair_lists() {
   for (const WallBody& wall : walls_) add_boundary(wall.particles.pos, wall.h());
   for (const SolidBody& solid : solids_) add_boundary(solid.particles.pos, solid.h());
 
-  fluid_inner_.build(f.pos, fluid_grid, fluid.kernel, /*exclude_self=*/true);
+  std::vector<ListRequest> lists{{&fluid_inner_, &fluid_grid, fluid.kernel, /*exclude_self=*/true}};
+  for (std::size_t c = 0; c < contacts_.size(); ++c)
+    lists.push_back({&contacts_[c].pairs, &boundary_grids[c], contact_kernels[c], /*exclude_self=*/false});
+  build_lists(f.pos, lists);
   for (std::size_t c = 0; c < contacts_.size(); ++c) {
     FluidContact& contact = contacts_[c];
-    contact.pairs.build(f.pos, boundary_grids[c], contact_kernels[c], /*exclude_self=*/false);
     const std::size_t boundary_count = boundary_grids[c].size();
     contact.pairs_of_boundary.build(contact.pairs, boundary_count);
     if (contact.boundary_dissipation_reaction.size() != boundary_count)
