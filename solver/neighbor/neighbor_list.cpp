@@ -13,7 +13,6 @@ namespace {
 using AcceptedPair = NeighborList::AcceptedPair;
 using RangeScratch = NeighborList::RangeScratch;
 
-
 // Writes to out[used...] the pairs of query i (at xi) with the target particles k in
 // [k_begin, k_end), shifted by `image`, that lie within the cutoff (not i itself where the query set
 // is the target set); returns the new end. Distances of the whole range first (a loop the compiler
