@@ -83,7 +83,6 @@ class LoopTeam {
     }
     n_.store(n, std::memory_order_relaxed);
     chunk_.store(chunk, std::memory_order_relaxed);
-    chunks_.store(chunks, std::memory_order_relaxed);
     body_.store(&body, std::memory_order_relaxed);
     fn_.store([](const void* b, std::size_t c, std::size_t begin, std::size_t end) {
       (*static_cast<const ChunkBody*>(b))(c, begin, end);
@@ -159,7 +158,6 @@ class LoopTeam {
   std::atomic<std::uint64_t> done_{0};   // chunks of the current loop finished
   std::atomic<bool> stop_{false};
   std::atomic<std::size_t> n_{0}, chunk_{1};
-  std::atomic<std::uint64_t> chunks_{0};
   std::atomic<const void*> body_{nullptr};
   std::atomic<ChunkFn> fn_{nullptr};
   std::thread::id leader_;
