@@ -79,8 +79,12 @@ Real PositionVerletSchedule::advance(Simulation& sim, Real max_step) {
     // The solids' sub-steps read of the fluid only the forces just set; the fluid's second half reads
     // of the solids only their volumes, normals and the previous step's averaged kinematics. So the
     // two run side by side; the solids' loops take the other thread when it is free (LoopTeam).
-    run_side_by_side([&] { acoustic_second_half(fluid, inner, contacts, dt, Sharing::Balanced); },
-                     [&] { sim.steps.solid += integrate_solids_over(sim, sim.time, dt); });
+    // A fluid alone keeps its static blocks and spawns nothing.
+    if (sim.solids().empty())
+      acoustic_second_half(fluid, inner, contacts, dt);
+    else
+      run_side_by_side([&] { acoustic_second_half(fluid, inner, contacts, dt, Sharing::Balanced); },
+                       [&] { sim.steps.solid += integrate_solids_over(sim, sim.time, dt); });
     for (SolidBody& solid : sim.solids()) end_kinematics_average(solid.particles, dt, sim.solid_kinematics);
     elapsed += dt;
     sim.time = last ? t0 + Dt : t0 + elapsed;
