@@ -1,10 +1,19 @@
 #!/usr/bin/env bash
 # Configures (once) and builds a CMake preset: release by default; pass another preset name
-# (native, debug, sanitize) as the first argument.
+# (native, debug, sanitize) as the first argument; a second argument names one target to build.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 preset="${1:-release}"
+target=()
+[ $# -ge 2 ] && target=(--target "$2")
+[ "$preset" = sanitize ] && scripts/install-clang.sh
+# A sanitize tree configured before it moved to clang (with gcc, no fuzzer target) is configured anew.
+if [ "$preset" = sanitize ] && [ -f build/sanitize/CMakeCache.txt ] &&
+   ! grep -q "^MRSPH_FUZZ:BOOL=ON" build/sanitize/CMakeCache.txt; then
+  echo "build.sh: build/sanitize was configured with another compiler; configuring it again with clang" >&2
+  rm -rf build/sanitize
+fi
 if [ ! -f "build/$preset/build.ninja" ]; then  # a configure that failed half-way is redone
   cmake --preset "$preset" >/dev/null
 fi
-cmake --build --preset "$preset"
+cmake --build --preset "$preset" "${target[@]}"

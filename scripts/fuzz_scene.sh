@@ -1,25 +1,17 @@
 #!/usr/bin/env bash
 # Fuzzes the scene reader with libFuzzer (+ ASan + UBSan) for a bounded time (default 120 s).
 # Seeds: every committed scene and the malformed-scene corpus. Findings (crashes, sanitizer reports,
-# leaks, inputs over 60 s, memory over 2 GB) are written to build/fuzz/findings/ and make the script fail.
+# leaks, inputs over 60 s, memory over 2 GB) are written to build/sanitize/fuzz-findings/ and make the script fail.
 #   scripts/fuzz_scene.sh [SECONDS]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds="${1:-120}"
-need=()
-command -v clang++ >/dev/null || need+=(clang)
-dpkg-query -W -f='${Status}' libclang-rt-14-dev 2>/dev/null | grep -q "install ok installed" || need+=(libclang-rt-14-dev)
-if [ ${#need[@]} -gt 0 ]; then
-  if [ "$(id -u)" -eq 0 ]; then as_root=(); else as_root=(sudo); fi
-  "${as_root[@]}" apt-get update -qq && "${as_root[@]}" apt-get install -y -qq "${need[@]}"
-fi
-[ -f build/fuzz/build.ninja ] || cmake --preset fuzz >/dev/null  # configured only if a configure completed
-cmake --build --preset fuzz --target scene_fuzzer
-corpus=build/fuzz/corpus; findings=build/fuzz/findings
+scripts/build.sh sanitize scene_fuzzer  # the sanitizer tests' build: only the fuzzer's own file is new
+corpus=build/sanitize/fuzz-corpus; findings=build/sanitize/fuzz-findings
 mkdir -p "$corpus" "$findings"
 cp verification/scenes/*.json tests/bad_scenes/*.json "$corpus"/
 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-  build/fuzz/scene_fuzzer "$corpus" -dict=tests/fuzz/scene.dict -max_total_time="$seconds" -max_len=4096 \
+  build/sanitize/scene_fuzzer "$corpus" -dict=tests/fuzz/scene.dict -max_total_time="$seconds" -max_len=4096 \
   -timeout=60 -rss_limit_mb=2048 -artifact_prefix="$findings/" -print_final_stats=1 2>&1 | tail -25
 # libFuzzer's artifacts: crash-, leak-, timeout- and oom- files are findings; slow-unit- files (an
 # input over 10 s, well inside the 60 s limit) are reported but do not fail the run.
