@@ -1,12 +1,14 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages the project needs, if missing. Idempotent; runs apt-get as
-# root, or through sudo otherwise.
+# root, or through sudo otherwise. Packages named as arguments are wanted too (scripts/build.sh
+# sanitize asks for clang and its sanitizer runtimes).
 set -euo pipefail
 
 packages=(
   g++ cmake ninja-build pkg-config
   libeigen3-dev libtbb-dev libgsl-dev catch2 nlohmann-json3-dev libcli11-dev libfmt-dev
   python3 python3-matplotlib python3-numpy
+  "$@"
 )
 
 missing=()
