@@ -13,35 +13,50 @@ namespace {
 using AcceptedPair = NeighborList::AcceptedPair;
 using RangeScratch = NeighborList::RangeScratch;
 
-// Writes to out[used...] the pairs of query i (at xi) with the target particles k in
-// [k_begin, k_end), shifted by `image`, that lie within the cutoff (not i itself where the query set
-// is the target set); returns the new end. Distances of the whole range first (a loop the compiler
-// vectorises), then the offsets within the cutoff: about a third, at random, so they are kept by
-// advancing the end by 0 or 1 instead of a branch that would be mispredicted often.
+// The candidates of query i (at xi) in one range [k_begin, k_end) of the target's sorted particles,
+// shifted by `image`, appended to the query's scratch: their offsets (xi - x_k) - image, their
+// squared distances (a loop the compiler vectorises) and their places k in the sorted order.
 // (xi - xj) - image is exactly antisymmetric in floating point: pair forces cancel to the bit.
-std::size_t append_pairs_in_range(const CellGrid& target, Index k_begin, Index k_end, const Vec2& image,
-                                  const Vec2& xi, std::size_t i, bool skip_self, Real cutoff2,
-                                  RangeScratch& scratch, std::vector<AcceptedPair>& out, std::size_t used) {
-  const std::size_t length = static_cast<std::size_t>(k_end - k_begin);
-  if (scratch.r2.size() < length) scratch.r2.resize(length), scratch.kept.resize(length);
-  if (out.size() < used + length) out.resize(2 * (used + length));  // only grows: sized once per build
-  const Real* x = target.sorted_x() + k_begin;
-  const Real* y = target.sorted_y() + k_begin;
-  Real* r2 = scratch.r2.data();
+void append_candidates(const CellGrid& target, Index k_begin, Index k_end, const Vec2& image, const Vec2& xi,
+                       RangeScratch& scratch) {
+  const std::size_t used = scratch.count, length = static_cast<std::size_t>(k_end - k_begin);
+  if (scratch.r2.size() < used + length) scratch.resize(2 * (used + length));
+  // The arrays never overlap (__restrict, which GCC and Clang accept): the loop is vectorised.
+  const Real* __restrict x = target.sorted_x() + k_begin;
+  const Real* __restrict y = target.sorted_y() + k_begin;
+  Real* __restrict dx = scratch.dx.data() + used;
+  Real* __restrict dy = scratch.dy.data() + used;
+  Real* __restrict r2 = scratch.r2.data() + used;
+  std::uint32_t* __restrict k = scratch.k.data() + used;
+  const Real qx = xi.x(), qy = xi.y(), sx = image.x(), sy = image.y();
   for (std::size_t m = 0; m < length; ++m) {
-    const Real dx = (xi.x() - x[m]) - image.x(), dy = (xi.y() - y[m]) - image.y();
-    r2[m] = dx * dx + dy * dy;
+    const Real ex = (qx - x[m]) - sx, ey = (qy - y[m]) - sy;
+    dx[m] = ex;
+    dy[m] = ey;
+    r2[m] = ex * ex + ey * ey;
   }
+  for (std::size_t m = 0; m < length; ++m) k[m] = static_cast<std::uint32_t>(k_begin + static_cast<Index>(m));
+  scratch.count = used + length;
+}
+
+// Writes to out[used...] the query's candidates within the cutoff, in the order they were
+// appended, without i itself where the query set is the target set (a particle meets itself only
+// with a zero image: the stencil never visits a cell twice); returns the new end. About a third
+// are kept, at random, so they are picked by advancing an end by 0 or 1, not by a branch.
+std::size_t keep_within_cutoff(const CellGrid& target, std::size_t i, bool exclude_self, Real cutoff2,
+                               RangeScratch& scratch, std::vector<AcceptedPair>& out, std::size_t used) {
+  const std::size_t length = scratch.count;
+  if (out.size() < used + length) out.resize(2 * (used + length));  // only grows: sized once per build
   std::size_t count = 0;
   for (std::size_t m = 0; m < length; ++m) {
     scratch.kept[count] = static_cast<std::uint32_t>(m);
-    count += static_cast<std::size_t>(r2[m] < cutoff2);
+    count += static_cast<std::size_t>(scratch.r2[m] < cutoff2);
   }
   for (std::size_t a = 0; a < count; ++a) {
     const std::size_t m = scratch.kept[a];
-    const Index j = target.sorted_index(k_begin + static_cast<Index>(m));
-    if (skip_self && static_cast<std::size_t>(j) == i) continue;
-    out[used++] = AcceptedPair{j, r2[m], Vec2((xi.x() - x[m]) - image.x(), (xi.y() - y[m]) - image.y())};
+    const Index j = target.sorted_index(static_cast<Index>(scratch.k[m]));
+    if (exclude_self && static_cast<std::size_t>(j) == i) continue;
+    out[used++] = AcceptedPair{j, scratch.r2[m], Vec2(scratch.dx[m], scratch.dy[m])};
   }
   return used;
 }
@@ -65,10 +80,11 @@ std::size_t NeighborList::search_chunk(const Vec2Array& queries, const ListReque
     const Vec2 xi = box.wrap(queries[i]);
     if (!target.within_reach(xi)) continue;  // counts[i] stays 0
     const std::size_t before = used;
+    scratch.count = 0;
     target.for_each_run_near(xi, [&](Index k_begin, Index k_end, const Vec2& image) {
-      used = append_pairs_in_range(target, k_begin, k_end, image, xi, i, request.exclude_self && image.isZero(),
-                                   cutoff2, scratch, chunk_pairs_[c], used);
+      append_candidates(target, k_begin, k_end, image, xi, scratch);
     });
+    used = keep_within_cutoff(target, i, request.exclude_self, cutoff2, scratch, chunk_pairs_[c], used);
     counts[i] = static_cast<Index>(used - before);
   }
   return used;

@@ -14,15 +14,18 @@
 
 namespace mrsph {
 
-// One pair (i, j) seen from i: e points from j to i, r = |r_i - r_j|, dW = dW/dr at r. W itself is
-// not stored (NeighborList::W): only the density summation, once per advection step, needs it,
-// while every pass reads the entries (40 bytes instead of 48).
+// One pair (i, j) seen from i: e points from j to i, r = |r_i - r_j|, dW = dW/dr at r. Every pass
+// reads the entries, so they are kept small: W is not stored (NeighborList::W; only the density
+// summation, once per advection step, needs it), and e is a Vec2 without Eigen's 16-byte
+// alignment, which would pad an entry from 40 to 48 bytes (the arithmetic is the same).
+using UnalignedVec2 = Eigen::Matrix<Real, 2, 1, Eigen::DontAlign>;
 struct Neighbor {
   Index j;
   Real r;
   Real dW;
-  Vec2 e;
+  UnalignedVec2 e;
 };
+static_assert(sizeof(Neighbor) == 40, "a neighbour entry is 40 bytes");
 
 class NeighborList;
 
@@ -67,11 +70,15 @@ class NeighborList {
     Real r2;
     Vec2 d;
   };
-  // A search task's scratch: the squared distances of one range of candidates, and the offsets of
-  // those within the cutoff.
+  // A search task's scratch: one query's candidates (offsets, squared distances, places in the
+  // target's sorted order), and the indices of those within the cutoff.
   struct RangeScratch {
-    std::vector<Real> r2;
-    std::vector<std::uint32_t> kept;
+    std::vector<Real> dx, dy, r2;
+    std::vector<std::uint32_t> k, kept;
+    std::size_t count = 0;
+    void resize(std::size_t n) {
+      dx.resize(n), dy.resize(n), r2.resize(n), k.resize(n), kept.resize(n);
+    }
   };
 
  private:
