@@ -182,24 +182,32 @@ void Simulation::build_pair_lists() {
   // Cell lists of every body first, from current positions; then all pair lists.
   CellGrid fluid_grid(box_, fluid.kernel.cutoff());
   fluid_grid.build(f.pos);
-  std::vector<CellGrid> boundary_grids;
-  std::vector<WendlandC2> contact_kernels;
-  auto add_boundary = [&](const Vec2Array& pos, Real h_boundary) {
-    const WendlandC2 kernel(std::max(fluid.h(), h_boundary));  // the larger h across bodies
-    boundary_grids.emplace_back(box_, kernel.cutoff());
-    boundary_grids.back().build(pos);
-    contact_kernels.push_back(kernel);
+  // Contacts come walls first, then solids (initialise()); across a contact the larger h of the two.
+  const auto contact_kernel = [&](Real h_boundary) { return WendlandC2(std::max(fluid.h(), h_boundary)); };
+  if (wall_grids_.size() != walls_.size()) {  // walls never move: their cell lists are built once
+    wall_grids_.clear();
+    for (const WallBody& wall : walls_) {
+      wall_grids_.emplace_back(box_, contact_kernel(wall.h()).cutoff());
+      wall_grids_.back().build(wall.particles.pos);
+    }
+  }
+  std::vector<CellGrid> solid_grids;
+  for (const SolidBody& solid : solids_) {
+    solid_grids.emplace_back(box_, contact_kernel(solid.h()).cutoff());
+    solid_grids.back().build(solid.particles.pos);
+  }
+  const auto boundary_grid = [&](std::size_t c) -> const CellGrid& {
+    return c < walls_.size() ? wall_grids_[c] : solid_grids[c - walls_.size()];
   };
-  for (const WallBody& wall : walls_) add_boundary(wall.particles.pos, wall.h());
-  for (const SolidBody& solid : solids_) add_boundary(solid.particles.pos, solid.h());
+  const auto boundary_h = [&](std::size_t c) { return c < walls_.size() ? walls_[c].h() : solids_[c - walls_.size()].h(); };
 
   std::vector<ListRequest> lists{{&fluid_inner_, &fluid_grid, fluid.kernel, /*exclude_self=*/true}};
   for (std::size_t c = 0; c < contacts_.size(); ++c)
-    lists.push_back({&contacts_[c].pairs, &boundary_grids[c], contact_kernels[c], /*exclude_self=*/false});
+    lists.push_back({&contacts_[c].pairs, &boundary_grid(c), contact_kernel(boundary_h(c)), /*exclude_self=*/false});
   build_lists(f.pos, lists);
   for (std::size_t c = 0; c < contacts_.size(); ++c) {
     FluidContact& contact = contacts_[c];
-    const std::size_t boundary_count = boundary_grids[c].size();
+    const std::size_t boundary_count = boundary_grid(c).size();
     contact.pairs_of_boundary.build(contact.pairs, boundary_count);
     if (contact.boundary_dissipation_reaction.size() != boundary_count)
       contact.boundary_dissipation_reaction.assign(boundary_count, Vec2::Zero());

@@ -10,6 +10,7 @@
 #include "core/errors.hpp"
 #include "fluid/fluid_body.hpp"
 #include "fsi/fluid_solid_coupling.hpp"
+#include "neighbor/cell_grid.hpp"
 #include "neighbor/domain_box.hpp"
 #include "solid/solid_body.hpp"
 #include "solid/solid_contact.hpp"
@@ -104,6 +105,7 @@ class Simulation {
   NeighborList fluid_inner_;
   std::vector<FluidContact> contacts_;
   std::size_t rebuilds_since_sort_ = 0;  // rebuilds so far; every kSortInterval-th one reorders
+  std::vector<CellGrid> wall_grids_;      // the fixed walls' cell lists for the fluid's contacts, built once
   void build_pair_lists();
   // Fluid options left to the scene (DensityReinitialisation and PressureReference Automatic):
   // a free surface where gravity acts along an axis that is not periodic, else a confined fluid.
