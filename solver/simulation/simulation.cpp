@@ -179,7 +179,8 @@ void Simulation::restore_relations(std::size_t rebuild_count) {
 void Simulation::build_pair_lists() {
   FluidBody& fluid = *fluid_;
   FluidParticles& f = fluid.particles;
-  // Cell lists of every body first, from current positions; then all pair lists.
+  // Cell lists of every body first (the fixed walls' once, the others from current positions);
+  // then all pair lists.
   CellGrid fluid_grid(box_, fluid.kernel.cutoff());
   fluid_grid.build(f.pos);
   // Contacts come walls first, then solids (initialise()); across a contact the larger h of the two.
@@ -199,7 +200,9 @@ void Simulation::build_pair_lists() {
   const auto boundary_grid = [&](std::size_t c) -> const CellGrid& {
     return c < walls_.size() ? wall_grids_[c] : solid_grids[c - walls_.size()];
   };
-  const auto boundary_h = [&](std::size_t c) { return c < walls_.size() ? walls_[c].h() : solids_[c - walls_.size()].h(); };
+  const auto boundary_h = [&](std::size_t c) {
+    return c < walls_.size() ? walls_[c].h() : solids_[c - walls_.size()].h();
+  };
 
   std::vector<ListRequest> lists{{&fluid_inner_, &fluid_grid, fluid.kernel, /*exclude_self=*/true}};
   for (std::size_t c = 0; c < contacts_.size(); ++c)
