@@ -54,8 +54,17 @@ struct GradientWeights {
 // gradient of a field u, dF/dt for the velocity (Eq. 17), F - I for the displacement.
 inline Mat2 weighted_gradient(const NeighborList& reference, const std::vector<Index>& neighbor, const Vec2Array& w,
                               const Vec2Array& u, std::size_t a) {
-  Mat2 gradient = Mat2::Zero();
-  for_each_pair_index(reference, a, [&](Index k) { gradient += (u[neighbor[k]] - u[a]) * w[k].transpose(); });
+  // Column by column: the same products and sums as gradient += du w^T, but with AVX GCC turns that
+  // 2x2 update into two 16-byte stores read back as one 32-byte load, which stalls (the `native`
+  // build ran the gate at half speed; reports/performance.md section 10).
+  Vec2 column0 = Vec2::Zero(), column1 = Vec2::Zero();
+  for_each_pair_index(reference, a, [&](Index k) {
+    const Vec2 du = u[neighbor[k]] - u[a];
+    column0 += du * w[k].x();
+    column1 += du * w[k].y();
+  });
+  Mat2 gradient;
+  gradient << column0, column1;
   return gradient;
 }
 
