@@ -11,14 +11,14 @@ namespace mrsph {
 namespace {
 
 using AcceptedPair = NeighborList::AcceptedPair;
-using RangeScratch = NeighborList::RangeScratch;
+using CandidateScratch = NeighborList::CandidateScratch;
 
 // The candidates of query i (at xi) in one range [k_begin, k_end) of the target's sorted particles,
 // shifted by `image`, appended to the query's scratch: their offsets (xi - x_k) - image, their
 // squared distances (a loop the compiler vectorises) and their places k in the sorted order.
 // (xi - xj) - image is exactly antisymmetric in floating point: pair forces cancel to the bit.
 void append_candidates(const CellGrid& target, Index k_begin, Index k_end, const Vec2& image, const Vec2& xi,
-                       RangeScratch& scratch) {
+                       CandidateScratch& scratch) {
   const std::size_t used = scratch.count, length = static_cast<std::size_t>(k_end - k_begin);
   if (scratch.r2.size() < used + length) scratch.resize(2 * (used + length));
   // The arrays never overlap (__restrict, which GCC and Clang accept): the loop is vectorised.
@@ -44,7 +44,7 @@ void append_candidates(const CellGrid& target, Index k_begin, Index k_end, const
 // with a zero image: the stencil never visits a cell twice); returns the new end. About a third
 // are kept, at random, so they are picked by advancing an end by 0 or 1, not by a branch.
 std::size_t keep_within_cutoff(const CellGrid& target, std::size_t i, bool exclude_self, Real cutoff2,
-                               RangeScratch& scratch, std::vector<AcceptedPair>& out, std::size_t used) {
+                               CandidateScratch& scratch, std::vector<AcceptedPair>& out, std::size_t used) {
   const std::size_t length = scratch.count;
   if (out.size() < used + length) out.resize(2 * (used + length));  // only grows: sized once per build
   std::size_t count = 0;
@@ -70,7 +70,7 @@ std::size_t keep_within_cutoff(const CellGrid& target, std::size_t i, bool exclu
 constexpr std::size_t kChunk = 256;
 
 std::size_t NeighborList::search_chunk(const Vec2Array& queries, const ListRequest& request, std::size_t c,
-                                       RangeScratch& scratch, Index* counts) {
+                                       CandidateScratch& scratch, Index* counts) {
   const CellGrid& target = *request.target;
   const DomainBox& box = target.box();
   const Real cutoff2 = request.kernel.cutoff() * request.kernel.cutoff();
@@ -120,7 +120,7 @@ void build_lists(const Vec2Array& queries, std::span<const ListRequest> requests
     if (request.list->chunk_pairs_.size() < chunks) request.list->chunk_pairs_.resize(chunks);
   }
   tbb::parallel_for(std::size_t(0), chunks, [&](std::size_t c) {
-    RangeScratch scratch;
+    CandidateScratch scratch;
     for (std::size_t l = 0; l < lists; ++l)
       chunk_used[l][c] = requests[l].list->search_chunk(queries, requests[l], c, scratch, counts[l].data());
   });

@@ -72,7 +72,7 @@ class NeighborList {
   };
   // A search task's scratch: one query's candidates (offsets, squared distances, places in the
   // target's sorted order), and the indices of those within the cutoff.
-  struct RangeScratch {
+  struct CandidateScratch {
     std::vector<Real> dx, dy, r2;
     std::vector<std::uint32_t> k, kept;
     std::size_t count = 0;
@@ -84,8 +84,8 @@ class NeighborList {
  private:
   friend void build_lists(const Vec2Array& queries, std::span<const ListRequest> requests);
   // The accepted pairs of chunk c of the queries into chunk_pairs_[c] and their counts; returns how many.
-  std::size_t search_chunk(const Vec2Array& queries, const ListRequest& request, std::size_t c, RangeScratch& scratch,
-                           Index* counts);
+  std::size_t search_chunk(const Vec2Array& queries, const ListRequest& request, std::size_t c,
+                           CandidateScratch& scratch, Index* counts);
   // Chunk c's pairs to their place in entries_, with their kernel gradients.
   void fill_chunk(std::size_t c, std::size_t used);
 

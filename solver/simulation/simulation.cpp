@@ -179,11 +179,12 @@ void Simulation::restore_relations(std::size_t rebuild_count) {
 void Simulation::build_pair_lists() {
   FluidBody& fluid = *fluid_;
   FluidParticles& f = fluid.particles;
-  // Cell lists of every body first (the fixed walls' once, the others from current positions);
-  // then all pair lists.
+  // Cell lists of every body (the fixed walls' once, the others from current positions), then all
+  // pair lists in one joint build.
   CellGrid fluid_grid(box_, fluid.kernel.cutoff());
   fluid_grid.build(f.pos);
-  // Contacts come walls first, then solids (initialise()); across a contact the larger h of the two.
+  // One grid and kernel per contact, in the contacts' order (walls, then solids: initialise());
+  // across a contact the larger h of the two bodies.
   const auto contact_kernel = [&](Real h_boundary) { return WendlandC2(std::max(fluid.h(), h_boundary)); };
   if (wall_grids_.size() != walls_.size()) {  // walls never move: their cell lists are built once
     wall_grids_.clear();
@@ -193,24 +194,20 @@ void Simulation::build_pair_lists() {
     }
   }
   std::vector<CellGrid> solid_grids;
-  for (const SolidBody& solid : solids_) {
-    solid_grids.emplace_back(box_, contact_kernel(solid.h()).cutoff());
-    solid_grids.back().build(solid.particles.pos);
-  }
-  const auto boundary_grid = [&](std::size_t c) -> const CellGrid& {
-    return c < walls_.size() ? wall_grids_[c] : solid_grids[c - walls_.size()];
-  };
-  const auto boundary_h = [&](std::size_t c) {
-    return c < walls_.size() ? walls_[c].h() : solids_[c - walls_.size()].h();
-  };
-
+  solid_grids.reserve(solids_.size());  // the requests below point into it
   std::vector<ListRequest> lists{{&fluid_inner_, &fluid_grid, fluid.kernel, /*exclude_self=*/true}};
-  for (std::size_t c = 0; c < contacts_.size(); ++c)
-    lists.push_back({&contacts_[c].pairs, &boundary_grid(c), contact_kernel(boundary_h(c)), /*exclude_self=*/false});
+  for (std::size_t w = 0; w < walls_.size(); ++w)
+    lists.push_back({&contacts_[w].pairs, &wall_grids_[w], contact_kernel(walls_[w].h()), /*exclude_self=*/false});
+  for (std::size_t s = 0; s < solids_.size(); ++s) {
+    const WendlandC2 kernel = contact_kernel(solids_[s].h());
+    solid_grids.emplace_back(box_, kernel.cutoff());
+    solid_grids.back().build(solids_[s].particles.pos);
+    lists.push_back({&contacts_[walls_.size() + s].pairs, &solid_grids.back(), kernel, /*exclude_self=*/false});
+  }
   build_lists(f.pos, lists);
   for (std::size_t c = 0; c < contacts_.size(); ++c) {
     FluidContact& contact = contacts_[c];
-    const std::size_t boundary_count = boundary_grid(c).size();
+    const std::size_t boundary_count = lists[c + 1].target->size();
     contact.pairs_of_boundary.build(contact.pairs, boundary_count);
     if (contact.boundary_dissipation_reaction.size() != boundary_count)
       contact.boundary_dissipation_reaction.assign(boundary_count, Vec2::Zero());
