@@ -280,3 +280,69 @@ TEST_CASE("delta-SPH diffusion vanishes on a linear density, at a free surface t
     CHECK(std::abs(balance) < 1e-12 * scale);  // sum V_i D_i = 0 by the pair antisymmetry (to round-off)
   }
 }
+
+TEST_CASE("The internal energy of each equation of state has de/drho = p / rho^2 and vanishes at rho0", "[fluid]") {
+  for (EquationOfStateKind kind : {EquationOfStateKind::Linear, EquationOfStateKind::Tait}) {
+    EquationOfState eos{kind, 1000.0, 20.0, 7.0, 3924.0};
+    CHECK(eos.internal_energy(1000.0) == 0.0);
+    for (double rho : {990.0, 1000.0, 1013.0}) {
+      const double step = 1e-3;
+      const double derivative = (eos.internal_energy(rho + step) - eos.internal_energy(rho - step)) / (2.0 * step);
+      CHECK(derivative == Approx(eos.pressure(rho) / (rho * rho)).epsilon(1e-6));
+    }
+  }
+}
+
+namespace {
+
+// A doubly periodic box under a background pressure of 1 % of rho c^2 (the still tank's 2 rho g H),
+// no viscosity and no Riemann terms, started from a square lattice with a 3 cm/s particle-scale
+// velocity field: kinetic plus internal energy after `steps` advection steps, minus at the start.
+double energy_change_under_pressure(bool refresh_pair_geometry, int steps, double& initial_kinetic) {
+  LoadedScene s = scene_from(R"json({
+    "parameters": {"dp": 0.005, "c": 19.81},
+    "domain": {"lower": [0, 0], "upper": [0.1, 0.1], "periodic": [true, true]},
+    "fluid": {"dp": "dp", "region": {"rectangle": {"lower": [0, 0], "upper": [0.1, 0.1]}}, "density": 1000,
+              "sound_speed": "c", "reference_velocity": "c / 10", "background_pressure": "0.01 * 1000 * c^2",
+              "density_reinitialisation": "internal", "pressure_reference": "zero",
+              "riemann": {"continuity": false, "momentum": false}, "refresh_pair_geometry": )json" +
+                             std::string(refresh_pair_geometry ? "true" : "false") + R"json(,
+              "initial_velocity": {"type": "expression", "u": "0.03*sin(2345.6*x+1771.3*y)", "v": "0.03*sin(1917.1*x-2553.7*y)"}},
+    "end_time": 1})json");
+  Simulation& sim = *s.simulation;
+  const FluidBody& fluid = sim.fluid();
+  const auto energies = [&](double& kinetic) {
+    const FluidParticles& f = fluid.particles;
+    double internal = 0.0;
+    kinetic = 0.0;
+    for (std::size_t i = 0; i < f.size(); ++i) {
+      kinetic += 0.5 * f.mass[i] * f.vel[i].squaredNorm();
+      internal += f.mass[i] * fluid.material.eos.internal_energy(f.rho[i]);
+    }
+    return kinetic + internal;
+  };
+  const double before = energies(initial_kinetic);
+  for (int k = 0; k < steps; ++k) s.schedule->advance(sim, 1.0);
+  double kinetic = 0.0;
+  return energies(kinetic) - before;
+}
+
+}  // namespace
+
+TEST_CASE("Under pressure, the undamped fluid conserves energy only with its pair geometry refreshed", "[fluid]") {
+  // reports/pressure.md section 9: the pair geometry cached at the list build, used at the positions
+  // of later acoustic steps, adds a force K dx (K the pressure part of the pair stiffness, dx the
+  // displacement since the build) that feeds the particle motion. 50 advection steps are 0.04 s.
+  double initial_kinetic = 0.0;
+  const double refreshed = energy_change_under_pressure(true, 50, initial_kinetic);
+  // The semi-discrete equations conserve kinetic plus internal energy. Measured: -1.8 % of the initial
+  // kinetic energy after 50 steps, of which -1.25 % is there after the first step (the energy is read
+  // with the density the continuity equation carried, set back to the summation at the next step);
+  // 5 % leaves room for that offset and position Verlet's error, and the square lattice's relaxation
+  // moves tens of per cent of the kinetic energy between the two forms meanwhile.
+  CHECK(std::abs(refreshed) < 0.05 * initial_kinetic);
+  // The cached geometry (the paper's) gains energy: 19.5 times the initial kinetic energy after 50
+  // steps, 3600 times after 100. The bound shows that this test catches it.
+  const double cached = energy_change_under_pressure(false, 50, initial_kinetic);
+  CHECK(cached > initial_kinetic);
+}

@@ -38,7 +38,9 @@ void advance_position(FluidBody& fluid, Real dt) {
 namespace {
 
 // f^p_i (Eqs. 28, 21, 30) and the density rate's pressure-difference part (the Riemann term, or the
-// delta-SPH diffusion D_i of density_diffusion.hpp); then, with kick_dt != 0, the kick.
+// delta-SPH diffusion D_i of density_diffusion.hpp); then, with kick_dt != 0, the kick. kRefresh: the
+// pair geometry at the current positions (FluidOptions::refresh_pair_geometry), else as cached.
+template <bool kRefresh>
 struct PressureInteraction {
   // Particle i's values, read once (a boundary pair's force is stored in the pair loop, after which
   // the compiler could not assume i's arrays unchanged), and its sums.
@@ -47,6 +49,7 @@ struct PressureInteraction {
     Real p_relative;      // p_i - 2 p_ref: the pair forces use p_i + p_j - 2 p_ref
     Real vol_scaled;      // V_i, divided by M1 with the pressure lattice correction
     Vec2 acc_prior;       // F^prior_i / m_i + g: the wall pressure's acceleration
+    Vec2 moved;           // r_i - r_i at the list build (kRefresh)
     Vec2 force = Vec2::Zero();
     Real drho = 0.0, diffusion = 0.0;
   };
@@ -54,6 +57,7 @@ struct PressureInteraction {
     const RealArray& vol;
     const Vec2Array& abar;
     Vec2Array& pair_force;
+    const FluidContact& contact;
   };
 
   FluidBody& fluid;
@@ -61,16 +65,31 @@ struct PressureInteraction {
   std::vector<FluidContact>& contacts;
   const Vec2& body_acceleration;
   Real kick_dt;
+  const NeighborList& inner_list;
   Real scale = fluid.options.pressure_lattice_correction ? 1.0 / fluid.lattice_gradient : 1.0;
   Real delta = fluid.options.delta_sph;
   Real diffusion_scale = delta * fluid.h() * fluid.material.sound_speed();
 
   Sum begin(std::size_t i) const {
     return {f.p[i], f.rho[i], f.p[i] - 2.0 * fluid.reference_pressure, scale * f.vol[i],
-            f.force_prior[i] / f.mass[i] + body_acceleration};
+            f.force_prior[i] / f.mass[i] + body_acceleration,
+            kRefresh ? fluid.moved_since_list_build[i] : Vec2::Zero()};
   }
 
-  void inner(Sum& s, std::size_t i, const Neighbor& n) const {
+  // The pair's geometry at the current positions (kRefresh).
+  Neighbor current_inner_pair(const Sum& s, const Neighbor& cached) const {
+    return inner_list.moved(cached, s.moved, fluid.moved_since_list_build[cached.j]);
+  }
+  Neighbor current_contact_pair(const Sum& s, const FluidContact& c, const Neighbor& cached) const {
+    return c.pairs.moved(cached, s.moved, c.boundary_positions == nullptr ? Vec2::Zero() : c.boundary_moved[cached.j]);
+  }
+
+  void inner(Sum& s, std::size_t i, const Neighbor& cached) const {
+    if constexpr (kRefresh) inner_pair_force(s, i, current_inner_pair(s, cached));
+    else inner_pair_force(s, i, cached);
+  }
+
+  void inner_pair_force(Sum& s, std::size_t i, const Neighbor& n) const {
     s.force -= (s.vol_scaled * f.vol[n.j] * (s.p_relative + f.p[n.j]) * n.dW) * n.e;
     if (fluid.riemann.continuity) s.drho += f.vol[n.j] * fluid.riemann.continuity_term(s.p, f.p[n.j]) * n.dW;
     if (delta != 0.0)
@@ -79,10 +98,15 @@ struct PressureInteraction {
   }
 
   Side boundary(std::size_t c) const {
-    return {*contacts[c].boundary.vol, *contacts[c].boundary.acc_ave, contacts[c].pair_pressure_force};
+    return {*contacts[c].boundary.vol, *contacts[c].boundary.acc_ave, contacts[c].pair_pressure_force, contacts[c]};
   }
 
-  void contact(Sum& s, std::size_t, const Side& b, Index k, const Neighbor& n) const {
+  void contact(Sum& s, std::size_t, const Side& b, Index k, const Neighbor& cached) const {
+    if constexpr (kRefresh) contact_pair_force(s, b, k, current_contact_pair(s, b.contact, cached));
+    else contact_pair_force(s, b, k, cached);
+  }
+
+  void contact_pair_force(Sum& s, const Side& b, Index k, const Neighbor& n) const {
     const Real p_d = wall_pressure(s.p, s.rho, s.acc_prior, b.abar[n.j], -n.r * n.e);
     const Vec2 pair = -(s.vol_scaled * b.vol[n.j] * (s.p_relative + p_d) * n.dW) * n.e;
     b.pair_force[k] = pair;
@@ -154,13 +178,32 @@ struct DivergenceAndDissipation {
   }
 };
 
+// r - r at the list build, of the fluid's particles and of the moving boundaries' (refresh_pair_geometry).
+void measure_displacements_since_list_build(FluidBody& fluid, std::vector<FluidContact>& contacts) {
+  const FluidParticles& f = fluid.particles;
+  fluid.moved_since_list_build.resize(f.size());
+  parallel_for_each(f.size(), [&](std::size_t i) {
+    fluid.moved_since_list_build[i] = f.pos[i] - fluid.positions_at_list_build[i];
+  }, kGrainSimpleLoop);
+  for (FluidContact& c : contacts) {
+    if (c.boundary_positions == nullptr) continue;
+    c.boundary_moved.resize(c.boundary_positions->size());
+    for (std::size_t a = 0; a < c.boundary_moved.size(); ++a)
+      c.boundary_moved[a] = (*c.boundary_positions)[a] - c.boundary_positions_at_list_build[a];
+  }
+}
+
 }  // namespace
 
 void compute_pressure_interaction(FluidBody& fluid, const NeighborList& inner, std::vector<FluidContact>& contacts,
                                   const Vec2& body_acceleration, Real kick_dt) {
   for (FluidContact& c : contacts) c.pair_pressure_force.resize(c.pairs.pair_count());
   compute_renormalised_density_gradient(fluid, inner);
-  sweep_with_contacts(inner, contacts, PressureInteraction{fluid, fluid.particles, contacts, body_acceleration, kick_dt});
+  if (fluid.options.refresh_pair_geometry) {
+    measure_displacements_since_list_build(fluid, contacts);
+    sweep_with_contacts(inner, contacts, PressureInteraction<true>{fluid, fluid.particles, contacts, body_acceleration, kick_dt, inner});
+  } else
+    sweep_with_contacts(inner, contacts, PressureInteraction<false>{fluid, fluid.particles, contacts, body_acceleration, kick_dt, inner});
 }
 
 void kick(FluidBody& fluid, Real dt, const Vec2& body_acceleration) {

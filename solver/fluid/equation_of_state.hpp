@@ -28,6 +28,14 @@ struct EquationOfState {
     if (kind == EquationOfStateKind::Linear) return rho0 + (p - background) / (c0 * c0);
     return rho0 * std::pow(1.0 + gamma * (p - background) / (rho0 * c0 * c0), 1.0 / gamma);
   }
+  // Internal energy per unit mass, e(rho) = integral from rho0 to rho of p(s) / s^2 ds (de = p / rho^2
+  // drho): with the kinetic energy, what an undamped fluid conserves (reports/pressure.md section 9).
+  Real internal_energy(Real rho) const {
+    const Real expansion = 1.0 / rho0 - 1.0 / rho;
+    if (kind == EquationOfStateKind::Linear) return background * expansion + c0 * c0 * (std::log(rho / rho0) - rho0 * expansion);
+    const Real B = rho0 * c0 * c0 / gamma;
+    return (background - B) * expansion + B / (rho0 * (gamma - 1.0)) * (std::pow(rho / rho0, gamma - 1.0) - 1.0);
+  }
   // Acoustic impedance rho0 c0 used by the Riemann solver.
   Real impedance() const { return rho0 * c0; }
 };

@@ -61,6 +61,11 @@ struct FluidOptions {
   // delta of the delta-SPH density diffusion with Antuono's correction (density_diffusion.hpp),
   // in place of the Riemann pressure-difference term; 0: off (the paper's method).
   Real delta_sph = 0.0;
+  // Evaluate the pressure pass's pair geometry (r, e, dW) at the positions of each acoustic step,
+  // from the displacements since the list build; off: the paper's, cached at the build once per
+  // advection step. Under a positive pressure the cached geometry feeds energy into the particle
+  // motion at a rate that grows with p and with the advection step (reports/pressure.md section 9).
+  bool refresh_pair_geometry = false;
   Real advection_cfl = 0.25;            // paper Eq. 32
   Real acoustic_cfl = 0.6;              // paper Eq. 33
 };
@@ -78,6 +83,9 @@ struct FluidBody {
   Real lattice_gradient;        // M1 for this dp and h
   Real reference_pressure = 0.0;  // subtracted from p in the pair forces (PressureReference)
   Vec2Array density_gradient;     // <grad rho>^L of the delta-SPH diffusion, each acoustic step
+  // With options.refresh_pair_geometry: positions at the list build, and each particle's displacement
+  // since then (set before each pressure pass).
+  Vec2Array positions_at_list_build, moved_since_list_build;
 
   FluidBody(std::string body_name, Real spacing, Real h_over_dp)
       : name(std::move(body_name)), dp(spacing), kernel(h_over_dp * spacing),
@@ -99,6 +107,10 @@ struct FluidContact {
   Vec2Array pair_pressure_force;      // written every acoustic step (first half)
   Vec2Array pair_viscous_force;       // written once per advection step
   Vec2Array pair_dissipation_force;   // Riemann momentum dissipation, written in the second half
+  // With the fluid's refresh_pair_geometry: a moving boundary's positions now (null for a wall, which
+  // never moves), at the list build, and its displacement since then (set before each pressure pass).
+  const Vec2Array* boundary_positions = nullptr;
+  Vec2Array boundary_positions_at_list_build, boundary_moved;
   // Force on each boundary particle from the dissipation of the previous second half. The fluid
   // applies that dissipation in the next acoustic step; so does the boundary. Indexed by boundary
   // particle, so it survives the rebuild of the pair list between advection steps.

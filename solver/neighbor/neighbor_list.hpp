@@ -8,7 +8,9 @@
 #include "kernel/wendland_c2.hpp"
 #include "neighbor/cell_grid.hpp"
 
+#include <algorithm>
 #include <cstdint>
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -56,6 +58,17 @@ class NeighborList {
 
   // This list alone (ListRequest says what it holds).
   void build(const Vec2Array& queries, const CellGrid& target, const WendlandC2& kernel, bool exclude_self);
+
+  // The pair's entry after particle i moved by moved_i and j by moved_j since the build: r, e and dW
+  // at the current positions, with the list's kernel (dW = 0 once the pair has left the support; a
+  // pair that entered it since the build is not in the list). Position differences, so a pair
+  // across a periodic boundary keeps its image (positions are wrapped only before a build).
+  Neighbor moved(const Neighbor& n, const Vec2& moved_i, const Vec2& moved_j) const {
+    const Vec2 r_ij = n.r * Vec2(n.e) + (moved_i - moved_j);
+    const Real r = r_ij.norm();
+    // Two particles that met (r = 0) have dW = 0: any direction will do, and none divides by zero.
+    return {n.j, r, kernel_.dW(r), UnalignedVec2(r_ij * (1.0 / std::max(r, std::numeric_limits<Real>::min())))};
+  }
 
   // W at the pair's distance, with the kernel the list was built with (the same bits as a stored W).
   Real W(const Neighbor& n) const {

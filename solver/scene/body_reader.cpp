@@ -63,6 +63,7 @@ void read_fluid_options(const SceneNode& node, FluidOptions& o) {
   o.reference_velocity = node.positive_or("reference_velocity", 1.0);
   o.viscous_lattice_correction = node.flag_or("viscous_lattice_correction", o.viscous_lattice_correction);
   o.pressure_lattice_correction = node.flag_or("pressure_lattice_correction", o.pressure_lattice_correction);
+  o.refresh_pair_geometry = node.flag_or("refresh_pair_geometry", o.refresh_pair_geometry);
   o.advection_cfl = node.positive_or("advection_cfl", o.advection_cfl);
   o.acoustic_cfl = node.positive_or("acoustic_cfl", o.acoustic_cfl);
 }

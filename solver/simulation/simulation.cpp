@@ -212,6 +212,16 @@ void Simulation::build_pair_lists() {
     if (contact.boundary_dissipation_reaction.size() != boundary_count)
       contact.boundary_dissipation_reaction.assign(boundary_count, Vec2::Zero());
   }
+  if (fluid.options.refresh_pair_geometry) record_positions_at_list_build();
+}
+
+void Simulation::record_positions_at_list_build() {
+  fluid_->positions_at_list_build = fluid_->particles.pos;
+  for (std::size_t s = 0; s < solids_.size(); ++s) {  // contacts: the walls, then the solids
+    FluidContact& contact = contacts_[walls_.size() + s];
+    contact.boundary_positions = &solids_[s].particles.pos;
+    contact.boundary_positions_at_list_build = solids_[s].particles.pos;
+  }
 }
 
 namespace {
