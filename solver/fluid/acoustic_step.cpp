@@ -37,6 +37,27 @@ void advance_position(FluidBody& fluid, Real dt) {
 
 namespace {
 
+// A pair as the pressure pass reads it: j, dW, r_i - r_j, and the kernel gradient as a scale times a
+// vector: dW e as cached at the list build, or (dW / r) r_ij at the current positions.
+struct CachedGeometry {
+  const Neighbor& n;
+  Index j() const { return n.j; }
+  Real dW() const { return n.dW; }
+  Real gradient_scale() const { return n.dW; }
+  Vec2 gradient_vector() const { return n.e; }
+  Vec2 offset() const { return n.r * Vec2(n.e); }
+  const Neighbor& entry() const { return n; }
+};
+struct MovedGeometry {
+  MovedPair m;
+  Index j() const { return m.j; }
+  Real dW() const { return m.dW; }
+  Real gradient_scale() const { return m.dW_over_r; }
+  const Vec2& gradient_vector() const { return m.r_ij; }
+  const Vec2& offset() const { return m.r_ij; }
+  Neighbor entry() const { return m.entry(); }
+};
+
 // f^p_i (Eqs. 28, 21, 30) and the density rate's pressure-difference part (the Riemann term, or the
 // delta-SPH diffusion D_i of density_diffusion.hpp); then, with kick_dt != 0, the kick. kRefresh: the
 // pair geometry at the current positions (FluidOptions::refresh_pair_geometry), else as cached.
@@ -77,24 +98,26 @@ struct PressureInteraction {
   }
 
   // The pair's geometry at the current positions (kRefresh).
-  Neighbor current_inner_pair(const Sum& s, const Neighbor& cached) const {
-    return inner_list.moved(cached, s.moved, fluid.moved_since_list_build[cached.j]);
+  MovedGeometry current_inner_pair(const Sum& s, const Neighbor& cached) const {
+    return {inner_list.moved(cached, s.moved, fluid.moved_since_list_build[cached.j])};
   }
-  Neighbor current_contact_pair(const Sum& s, const FluidContact& c, const Neighbor& cached) const {
-    return c.pairs.moved(cached, s.moved, c.boundary_positions == nullptr ? Vec2::Zero() : c.boundary_moved[cached.j]);
+  MovedGeometry current_contact_pair(const Sum& s, const FluidContact& c, const Neighbor& cached) const {
+    return {c.pairs.moved(cached, s.moved, c.boundary_positions == nullptr ? Vec2::Zero() : c.boundary_moved[cached.j])};
   }
 
   void inner(Sum& s, std::size_t i, const Neighbor& cached) const {
     if constexpr (kRefresh) inner_pair_force(s, i, current_inner_pair(s, cached));
-    else inner_pair_force(s, i, cached);
+    else inner_pair_force(s, i, CachedGeometry{cached});
   }
 
-  void inner_pair_force(Sum& s, std::size_t i, const Neighbor& n) const {
-    s.force -= (s.vol_scaled * f.vol[n.j] * (s.p_relative + f.p[n.j]) * n.dW) * n.e;
-    if (fluid.riemann.continuity) s.drho += f.vol[n.j] * fluid.riemann.continuity_term(s.p, f.p[n.j]) * n.dW;
+  template <class Geometry>
+  void inner_pair_force(Sum& s, std::size_t i, const Geometry& g) const {
+    const Index j = g.j();
+    s.force -= (s.vol_scaled * f.vol[j] * (s.p_relative + f.p[j]) * g.gradient_scale()) * g.gradient_vector();
+    if (fluid.riemann.continuity) s.drho += f.vol[j] * fluid.riemann.continuity_term(s.p, f.p[j]) * g.dW();
     if (delta != 0.0)
-      s.diffusion += density_diffusion_pair(s.rho, f.rho[n.j], fluid.density_gradient[i], fluid.density_gradient[n.j],
-                                            f.vol[n.j], n);
+      s.diffusion += density_diffusion_pair(s.rho, f.rho[j], fluid.density_gradient[i], fluid.density_gradient[j],
+                                            f.vol[j], g.entry());
   }
 
   Side boundary(std::size_t c) const {
@@ -103,15 +126,17 @@ struct PressureInteraction {
 
   void contact(Sum& s, std::size_t, const Side& b, Index k, const Neighbor& cached) const {
     if constexpr (kRefresh) contact_pair_force(s, b, k, current_contact_pair(s, b.contact, cached));
-    else contact_pair_force(s, b, k, cached);
+    else contact_pair_force(s, b, k, CachedGeometry{cached});
   }
 
-  void contact_pair_force(Sum& s, const Side& b, Index k, const Neighbor& n) const {
-    const Real p_d = wall_pressure(s.p, s.rho, s.acc_prior, b.abar[n.j], -n.r * n.e);
-    const Vec2 pair = -(s.vol_scaled * b.vol[n.j] * (s.p_relative + p_d) * n.dW) * n.e;
+  template <class Geometry>
+  void contact_pair_force(Sum& s, const Side& b, Index k, const Geometry& g) const {
+    const Index a = g.j();
+    const Real p_d = wall_pressure(s.p, s.rho, s.acc_prior, b.abar[a], -g.offset());
+    const Vec2 pair = -(s.vol_scaled * b.vol[a] * (s.p_relative + p_d) * g.gradient_scale()) * g.gradient_vector();
     b.pair_force[k] = pair;
     s.force += pair;
-    if (fluid.riemann.continuity) s.drho += b.vol[n.j] * fluid.riemann.continuity_term(s.p, p_d) * n.dW;
+    if (fluid.riemann.continuity) s.drho += b.vol[a] * fluid.riemann.continuity_term(s.p, p_d) * g.dW();
   }
 
   void finish(std::size_t i, const Sum& s) const {

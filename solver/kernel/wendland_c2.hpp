@@ -27,6 +27,13 @@ class WendlandC2 {
     const Real a = 1.0 - 0.5 * q;
     return factor_dW_ * q * a * a * a;
   }
+  // dW/dr / r, without a division: 35/(4 pi h^4) (1 - q/2)^3.
+  Real dW_over_r(Real r) const {
+    const Real q = r * inv_h_;
+    if (q >= 2.0) return 0.0;
+    const Real a = 1.0 - 0.5 * q;
+    return factor_dW_ * inv_h_ * a * a * a;
+  }
   Real W0() const { return factor_W_; }
   // W and dW/dr together (shared terms), for r < cutoff.
   void values(Real r, Real& w, Real& dw) const {

@@ -29,6 +29,16 @@ struct Neighbor {
 };
 static_assert(sizeof(Neighbor) == 40, "a neighbour entry is 40 bytes");
 
+// A listed pair at positions other than the build's (NeighborList::moved): the kernel gradient is
+// dW_over_r r_ij, which needs no division.
+struct MovedPair {
+  Index j;
+  Real r, dW, dW_over_r;
+  Vec2 r_ij;
+  // As a list entry (e = r_ij / r; two particles that met, r = 0, get e = 0 and have dW = 0).
+  Neighbor entry() const { return {j, r, dW, UnalignedVec2(r_ij * (1.0 / std::max(r, std::numeric_limits<Real>::min())))}; }
+};
+
 class NeighborList;
 
 // One list of a joint build (build_lists): the neighbours of the queries among `target`'s particles
@@ -59,15 +69,15 @@ class NeighborList {
   // This list alone (ListRequest says what it holds).
   void build(const Vec2Array& queries, const CellGrid& target, const WendlandC2& kernel, bool exclude_self);
 
-  // The pair's entry after particle i moved by moved_i and j by moved_j since the build: r, e and dW
+  // The pair after particle i moved by moved_i and j by moved_j since the build: r_ij, r, dW and dW / r
   // at the current positions, with the list's kernel (dW = 0 once the pair has left the support; a
   // pair that entered it since the build is not in the list). Position differences, so a pair
   // across a periodic boundary keeps its image (positions are wrapped only before a build).
-  Neighbor moved(const Neighbor& n, const Vec2& moved_i, const Vec2& moved_j) const {
+  MovedPair moved(const Neighbor& n, const Vec2& moved_i, const Vec2& moved_j) const {
     const Vec2 r_ij = n.r * Vec2(n.e) + (moved_i - moved_j);
     const Real r = r_ij.norm();
-    // Two particles that met (r = 0) have dW = 0: any direction will do, and none divides by zero.
-    return {n.j, r, kernel_.dW(r), UnalignedVec2(r_ij * (1.0 / std::max(r, std::numeric_limits<Real>::min())))};
+    const Real dW_over_r = kernel_.dW_over_r(r);
+    return {n.j, r, dW_over_r * r, dW_over_r, r_ij};
   }
 
   // W at the pair's distance, with the kernel the list was built with (the same bits as a stored W).
