@@ -132,3 +132,44 @@ TEST_CASE("Transposed contacts list every pair of each target once", "[neighbors
     }
   CHECK(total == list.pair_count());
 }
+
+TEST_CASE("A listed pair moved since the build has the geometry of a list built at the new positions", "[neighbors]") {
+  // Periodic along x, so that pairs across the seam keep their image: positions are not wrapped.
+  DomainBox box{Vec2(0.0, 0.0), Vec2(1.0, 1.0), {true, false}};
+  const Vec2Array p = random_points(400, box.lower, box.upper, 11);
+  const WendlandC2 k(0.05);
+  CellGrid grid(box, k.cutoff());
+  grid.build(p);
+  NeighborList list;
+  list.build(p, grid, k, true);
+  const Vec2Array moved = random_points(p.size(), Vec2(-0.01, -0.01), Vec2(0.01, 0.01), 12);
+  Vec2Array q(p.size());
+  for (std::size_t i = 0; i < p.size(); ++i) q[i] = box.wrap(p[i] + moved[i]);
+  CellGrid grid_now(box, k.cutoff());
+  grid_now.build(q);
+  NeighborList now;
+  now.build(q, grid_now, k, true);
+  std::map<std::pair<int, int>, Neighbor> rebuilt;
+  for (std::size_t i = 0; i < now.size(); ++i)
+    for (const Neighbor& n : now.of(i)) rebuilt[{int(i), n.j}] = n;
+  std::size_t compared = 0;
+  for (std::size_t i = 0; i < list.size(); ++i)
+    for (const Neighbor& n : list.of(i)) {
+      const MovedPair m = list.moved(n, moved[i], moved[n.j]);
+      const auto it = rebuilt.find({int(i), n.j});
+      if (it == rebuilt.end()) {  // left the support: no force
+        CHECK(m.r >= k.cutoff() * (1.0 - 1e-12));
+        CHECK(m.dW == 0.0);
+        continue;
+      }
+      const Neighbor& fresh = it->second;
+      CHECK(m.r == Approx(fresh.r).epsilon(1e-12));
+      CHECK(m.dW == Approx(fresh.dW).epsilon(1e-9).margin(1e-9 * std::abs(k.dW(k.h()))));
+      const Vec2 gradient = m.dW_over_r * m.r_ij, expected = fresh.dW * Vec2(fresh.e);
+      CHECK((gradient - expected).norm() < 1e-9 * std::abs(k.dW(k.h())));
+      const Neighbor entry = m.entry();
+      CHECK((Vec2(entry.e) - Vec2(fresh.e)).norm() < 1e-12);
+      ++compared;
+    }
+  CHECK(compared > 1000);
+}
