@@ -45,8 +45,8 @@ struct CachedGeometry {
   Real dW() const { return n.dW; }
   Real gradient_scale() const { return n.dW; }
   Vec2 gradient_vector() const { return n.e; }
-  Vec2 offset() const { return n.r * Vec2(n.e); }
-  const Neighbor& entry() const { return n; }
+  Vec2 r_ij() const { return n.r * Vec2(n.e); }
+  const Neighbor& neighbor() const { return n; }
 };
 struct MovedGeometry {
   MovedPair m;
@@ -54,8 +54,8 @@ struct MovedGeometry {
   Real dW() const { return m.dW; }
   Real gradient_scale() const { return m.dW_over_r; }
   const Vec2& gradient_vector() const { return m.r_ij; }
-  const Vec2& offset() const { return m.r_ij; }
-  Neighbor entry() const { return m.entry(); }
+  const Vec2& r_ij() const { return m.r_ij; }
+  Neighbor neighbor() const { return m.as_neighbor(); }
 };
 
 // f^p_i (Eqs. 28, 21, 30) and the density rate's pressure-difference part (the Riemann term, or the
@@ -117,7 +117,7 @@ struct PressureInteraction {
     if (fluid.riemann.continuity) s.drho += f.vol[j] * fluid.riemann.continuity_term(s.p, f.p[j]) * g.dW();
     if (delta != 0.0)
       s.diffusion += density_diffusion_pair(s.rho, f.rho[j], fluid.density_gradient[i], fluid.density_gradient[j],
-                                            f.vol[j], g.entry());
+                                            f.vol[j], g.neighbor());
   }
 
   Side boundary(std::size_t c) const {
@@ -132,7 +132,7 @@ struct PressureInteraction {
   template <class Geometry>
   void contact_pair_force(Sum& s, const Side& b, Index k, const Geometry& g) const {
     const Index a = g.j();
-    const Real p_d = wall_pressure(s.p, s.rho, s.acc_prior, b.abar[a], -g.offset());
+    const Real p_d = wall_pressure(s.p, s.rho, s.acc_prior, b.abar[a], -g.r_ij());
     const Vec2 pair = -(s.vol_scaled * b.vol[a] * (s.p_relative + p_d) * g.gradient_scale()) * g.gradient_vector();
     b.pair_force[k] = pair;
     s.force += pair;

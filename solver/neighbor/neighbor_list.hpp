@@ -35,8 +35,8 @@ struct MovedPair {
   Index j;
   Real r, dW, dW_over_r;
   Vec2 r_ij;
-  // As a list entry (e = r_ij / r; two particles that met, r = 0, get e = 0 and have dW = 0).
-  Neighbor entry() const { return {j, r, dW, UnalignedVec2(r_ij * (1.0 / std::max(r, std::numeric_limits<Real>::min())))}; }
+  // As a neighbour entry (e = r_ij / r; two particles that met, r = 0, get e = 0 and have dW = 0).
+  Neighbor as_neighbor() const { return {j, r, dW, UnalignedVec2(r_ij * (1.0 / std::max(r, std::numeric_limits<Real>::min())))}; }
 };
 
 class NeighborList;
