@@ -60,11 +60,13 @@ profile_path = os.path.join(directory, "tank_profiles.csv")
 if os.path.exists(profile_path):
     p = read_csv(profile_path)
     fig, (ax, ax_err) = plt.subplots(1, 2, figsize=(9, 4.5))
-    keys = sorted(set(zip(p["resolution"], p["sound_speed_factor"])))
-    for res, c in keys:
-        sel = [k for k in range(len(p["resolution"])) if p["resolution"][k] == res and p["sound_speed_factor"][k] == c]
+    refresh = p.get("refresh_pair_geometry", [0.0] * len(p["resolution"]))
+    keys = sorted(set(zip(p["resolution"], p["sound_speed_factor"], refresh)))
+    for res, c, fresh in keys:
+        sel = [k for k in range(len(p["resolution"])) if (p["resolution"][k], p["sound_speed_factor"][k], refresh[k]) == (res, c, fresh)]
         depth = [p["depth_over_H"][k] for k in sel]
-        ax.plot([p["pressure_over_rho_g_H"][k] for k in sel], depth, "o-", ms=3, label=f"H/dp = {res:g}, c = {c:g} sqrt(2gH)")
+        label = f"H/dp = {res:g}, c = {c:g} sqrt(2gH)" + (", refreshed pair geometry" if fresh else "")
+        ax.plot([p["pressure_over_rho_g_H"][k] for k in sel], depth, "o-", ms=3, label=label)
         ax_err.plot([p["pressure_over_rho_g_H"][k] - p["hydrostatic_over_rho_g_H"][k] for k in sel], depth, "o-", ms=3)
     ax.plot([0, 1], [0, 1], "k--", lw=0.8, label="rho g (H - y)")
     ax.set_xlabel("p / (rho g H)")
