@@ -102,7 +102,7 @@ struct PressureInteraction {
     return {inner_list.moved(cached, s.moved, fluid.moved_since_list_build[cached.j])};
   }
   MovedGeometry current_contact_pair(const Sum& s, const FluidContact& c, const Neighbor& cached) const {
-    return {c.pairs.moved(cached, s.moved, c.boundary_positions == nullptr ? Vec2::Zero() : c.boundary_moved[cached.j])};
+    return {c.pairs.moved(cached, s.moved, c.boundary.pos == nullptr ? Vec2::Zero() : c.boundary_moved[cached.j])};
   }
 
   void inner(Sum& s, std::size_t i, const Neighbor& cached) const {
@@ -211,10 +211,10 @@ void measure_displacements_since_list_build(FluidBody& fluid, std::vector<FluidC
     fluid.moved_since_list_build[i] = f.pos[i] - fluid.positions_at_list_build[i];
   }, kGrainSimpleLoop);
   for (FluidContact& c : contacts) {
-    if (c.boundary_positions == nullptr) continue;
-    c.boundary_moved.resize(c.boundary_positions->size());
+    if (c.boundary.pos == nullptr) continue;
+    c.boundary_moved.resize(c.boundary.pos->size());
     for (std::size_t a = 0; a < c.boundary_moved.size(); ++a)
-      c.boundary_moved[a] = (*c.boundary_positions)[a] - c.boundary_positions_at_list_build[a];
+      c.boundary_moved[a] = (*c.boundary.pos)[a] - c.boundary_positions_at_list_build[a];
   }
 }
 

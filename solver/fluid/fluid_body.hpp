@@ -107,9 +107,8 @@ struct FluidContact {
   Vec2Array pair_pressure_force;      // written every acoustic step (first half)
   Vec2Array pair_viscous_force;       // written once per advection step
   Vec2Array pair_dissipation_force;   // Riemann momentum dissipation, written in the second half
-  // With the fluid's refresh_pair_geometry: a moving boundary's positions now (null for a wall, which
-  // never moves), at the list build, and its displacement since then (set before each pressure pass).
-  const Vec2Array* boundary_positions = nullptr;
+  // With the fluid's refresh_pair_geometry, for a moving boundary (boundary.pos set): its positions at
+  // the list build, and its displacement since then (set before each pressure pass).
   Vec2Array boundary_positions_at_list_build, boundary_moved;
   // Force on each boundary particle from the dissipation of the previous second half. The fluid
   // applies that dissipation in the next acoustic step; so does the boundary. Indexed by boundary

@@ -217,11 +217,8 @@ void Simulation::build_pair_lists() {
 
 void Simulation::record_positions_at_list_build() {
   fluid_->positions_at_list_build = fluid_->particles.pos;
-  for (std::size_t s = 0; s < solids_.size(); ++s) {  // contacts: the walls, then the solids
-    FluidContact& contact = contacts_[walls_.size() + s];
-    contact.boundary_positions = &solids_[s].particles.pos;
-    contact.boundary_positions_at_list_build = solids_[s].particles.pos;
-  }
+  for (FluidContact& contact : contacts_)
+    if (contact.boundary.pos != nullptr) contact.boundary_positions_at_list_build = *contact.boundary.pos;
 }
 
 namespace {
