@@ -4,12 +4,21 @@ Reads DIRECTORY/diagnosis/cfd2_settling.csv (drag and lift in bins of 0.25 time 
 rows per run) and DIRECTORY/diagnosis/cfd2_windows.csv (means over windows per run), writes
 DIRECTORY/pressure_cfd2_settling.png. Usage: /usr/bin/python3 scripts/plot_pressure_settling.py reports/pressure
 """
+import json
 import math
 import os
 
 from plot_common import plt, read_csv, save, suite_dir
 
-TUREK_HRON_CFD2_DRAG = 1.367  # Turek & Hron (2006), reference-data/turek_hron_cfd.json
+project = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+with open(os.path.join(project, "reference-data", "turek_hron_cfd.json")) as f:
+    TUREK_HRON_CFD2_DRAG = json.load(f)["CFD2"]["drag"]  # Turek & Hron (2006)
+
+
+def block_means(values, size=4):
+    """Means of consecutive blocks of `size` values (a trailing partial block is dropped)."""
+    return [sum(values[i:i + size]) / size for i in range(0, len(values) - size + 1, size)]
+
 
 directory = suite_dir()
 series = read_csv(os.path.join(directory, "diagnosis", "cfd2_settling.csv"))
@@ -21,8 +30,8 @@ for res, c, ramp in shown:
     rows = [k for k in range(len(series["t_mid"]))
             if (series["resolution"][k], series["sound_speed_factor"][k], series["ramp_time"][k]) == (res, c, ramp)]
     # Means over 1 time unit (four bins): the particle-scale noise averaged out, the mode (period 2.4) kept.
-    t = [sum(series["t_mid"][k] for k in rows[i:i + 4]) / 4 for i in range(0, len(rows) - 3, 4)]
-    drag = [sum(series["drag"][k] for k in rows[i:i + 4]) / 4 for i in range(0, len(rows) - 3, 4)]
+    t = block_means([series["t_mid"][k] for k in rows])
+    drag = block_means([series["drag"][k] for k in rows])
     label = f"D/dp = {res:g}, c = {c:g} U0" + (f", ramp over {ramp:g}" if ramp != 2 else "")
     history.plot(t, drag, lw=1.0, marker=".", ms=3, label=label)
 history.axhline(TUREK_HRON_CFD2_DRAG, color="k", ls="--", lw=0.8, label="Turek & Hron")
