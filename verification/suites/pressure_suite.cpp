@@ -179,9 +179,10 @@ void run_cylinder_benchmarks(const SuiteContext& ctx, SuiteSummary& summary) {
   // Settling: the inflow ramps up over t = 2 and starts the channel's acoustic mode (period 2.4 at
   // c = 10 U0: 2 L / c for L = 12 D, between the inflow buffer's 11 D and the 13 D period), which
   // decays slowly, the more slowly the finer the particles: CFD2's drag over t = 12-24 read 1.390 at
-  // D/dp = 40 and 1.429 over t = 16-24 (reports/pressure.md section 10). Over t = 24-48 the means of consecutive 2-unit bins of
-  // the drag stay within 1 % of their mean at D/dp = 20. CFD3 starts shedding late (at D/dp = 40 from
-  // t = 25; not by t = 40 at D/dp = 20): run to t = 80 and measured over its last 40 (9 periods).
+  // D/dp = 40 and 1.429 over t = 16-24 (reports/pressure.md section 10). Over t = 24-48 the means of
+  // consecutive 2-unit bins of the drag stay within 1 % of their mean at D/dp = 20. CFD3 starts
+  // shedding late (at D/dp = 40 from t = 25; not by t = 40 at D/dp = 20): run to t = 80 and measured
+  // over its last 40 (9 periods).
   const std::vector<BenchmarkCase> cases =
       ctx.quick ? std::vector<BenchmarkCase>{{"CFD2", 100.0, 20.0, 10.0, false}}
                 : std::vector<BenchmarkCase>{{"CFD1", 20.0, 48.0, 24.0, false},
