@@ -47,7 +47,10 @@ void print_scene(const mrsph::LoadedScene& scene) {
                " momentum {}; delta-SPH diffusion {}; pressure pass's pair geometry {}; emptiest kernel support {:.0f} %"
                " filled\n",
                free_surface ? "free-surface" : sim.open_boundaries.empty() ? "confined" : "open (inlet/outlet)",
-               continuity ? "the continuity equation" : "summation each advection step",
+               continuity                               ? std::string("the continuity equation")
+               : f.options.density_relaxation == 1.0 ? std::string("summation each advection step")
+                                                        : fmt::format("summation each advection step, relaxed by {:g}",
+                                                                      f.options.density_relaxation),
                f.options.pressure_reference == mrsph::PressureReference::Mean ? "the mean pressure" : "zero",
                f.riemann.continuity ? "on" : "off", f.riemann.momentum ? "on" : "off",
                f.options.delta_sph > 0.0 ? fmt::format("delta {:g}", f.options.delta_sph) : std::string("off"),

@@ -57,7 +57,8 @@ void update_reference_pressure(FluidBody& fluid) {
 
 }  // namespace
 
-void reinitialise_density(FluidBody& fluid, const NeighborList& inner, const std::vector<FluidContact>& contacts) {
+void reinitialise_density(FluidBody& fluid, const NeighborList& inner, const std::vector<FluidContact>& contacts,
+                          Real relaxation) {
   FluidParticles& f = fluid.particles;
   const Real rho0 = fluid.material.rho0();
   const bool free_surface = fluid.options.density == DensityReinitialisation::FreeSurface;
@@ -68,6 +69,7 @@ void reinitialise_density(FluidBody& fluid, const NeighborList& inner, const std
   parallel_for_each(f.size(), [&](std::size_t i) {
     Real rho = summation_density(fluid, inner, contacts, i);
     if (free_surface) rho = std::max(rho, rho0);
+    if (relaxation != 1.0) rho = f.rho[i] + relaxation * (rho - f.rho[i]);
     f.rho[i] = rho;
     f.vol[i] = f.mass[i] / rho;
   });

@@ -39,6 +39,11 @@ enum class PressureReference { Zero, Mean, Automatic };
 struct FluidOptions {
   DensityReinitialisation density = DensityReinitialisation::Internal;
   PressureReference pressure_reference = PressureReference::Zero;
+  // theta of the density re-initialisation once per advection step (Internal and FreeSurface),
+  // rho <- rho + theta (rho_sum - rho): 1, the paper's, replaces the continuity equation's density by
+  // the summation; below 1 the summation pulls it towards itself by that fraction, which filters the
+  // summation's response to the particles' arrangement (reports/pressure.md section 11).
+  Real density_relaxation = 1.0;
   Real transport_velocity_alpha = 0.0;  // 0: no transport-velocity correction
   // Initial particle relaxation (transport_velocity.hpp): this many shifts of the fluid particles
   // towards a uniform distribution before t = 0, walls and solids held still. 0: the lattice as cut.

@@ -55,6 +55,11 @@ void read_fluid_options(const SceneNode& node, FluidOptions& o) {
   o.pressure_reference = reference == "mean"   ? PressureReference::Mean
                          : reference == "zero" ? PressureReference::Zero
                                                : PressureReference::Automatic;
+  o.density_relaxation = node.positive_or("density_relaxation", 1.0);
+  if (o.density_relaxation > 1.0)
+    node.fail("density_relaxation", fmt::format("expected a fraction in (0, 1] (1: the paper's summation), got {:g}", o.density_relaxation));
+  if (o.density_relaxation != 1.0 && o.density == DensityReinitialisation::None)
+    node.fail("density_relaxation", "a fraction of the summation needs one (density_reinitialisation is none)");
   o.transport_velocity_alpha = node.non_negative_or("transport_velocity_alpha", 0.0);
   o.relaxation_steps = node.count_or("relaxation_steps", 0, 100000);
   o.relaxation_perturbation = node.non_negative_or("relaxation_perturbation", 0.0);

@@ -82,7 +82,7 @@ void Simulation::initialise() {
   rebuild_fluid_relations();
   resolve_automatic_fluid_options();
   relax_fluid_particles();
-  reinitialise_density(*fluid_, fluid_inner_, contacts_);
+  reinitialise_density(*fluid_, fluid_inner_, contacts_, 1.0);  // the initial density: the arrangement's
   FluidParticles& f = fluid_->particles;
   for (std::size_t i = 0; i < f.size(); ++i) f.p[i] = fluid_->material.eos.pressure(f.rho[i]);
   if (!open_boundaries.empty()) impose_buffer_states(*fluid_, open_boundaries, time, 0.0);

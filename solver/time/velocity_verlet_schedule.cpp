@@ -44,7 +44,7 @@ Real VelocityVerletSchedule::advance(Simulation& sim, Real max_step) {
   const Real t0 = sim.time;
   const Real Dt = std::min(advection_time_step(fluid, sim.body_force.at(t0)), max_step);
 
-  reinitialise_density(fluid, inner, contacts);
+  reinitialise_density(fluid, inner, contacts, fluid.options.density_relaxation);
   sim.impose_boundary_states(0.0);
   compute_viscous_force(fluid, inner, contacts);
   correct_transport_velocity(fluid, inner, contacts);
