@@ -60,12 +60,17 @@ profile_path = os.path.join(directory, "tank_profiles.csv")
 if os.path.exists(profile_path):
     p = read_csv(profile_path)
     fig, (ax, ax_err) = plt.subplots(1, 2, figsize=(9, 4.5))
-    refresh = p.get("refresh_pair_geometry", [0.0] * len(p["resolution"]))
-    keys = sorted(set(zip(p["resolution"], p["sound_speed_factor"], refresh)))
-    for res, c, fresh in keys:
-        sel = [k for k in range(len(p["resolution"])) if (p["resolution"][k], p["sound_speed_factor"][k], refresh[k]) == (res, c, fresh)]
+    rows = len(p["resolution"])
+    refresh = p.get("refresh_pair_geometry", [0.0] * rows)
+    relaxation = p.get("density_relaxation", [1.0] * rows)
+    corrected = p.get("pressure_lattice_correction", [0.0] * rows)
+    case = [(p["resolution"][k], p["sound_speed_factor"][k], refresh[k], relaxation[k], corrected[k]) for k in range(rows)]
+    for key in sorted(set(case)):
+        res, c, fresh, theta, lattice = key
+        sel = [k for k in range(rows) if case[k] == key]
         depth = [p["depth_over_H"][k] for k in sel]
-        label = f"H/dp = {res:g}, c = {c:g} sqrt(2gH)" + (", refreshed pair geometry" if fresh else "")
+        label = (f"H/dp = {res:g}, c = {c:g} sqrt(2gH)" + (", refreshed" if fresh else "")
+                 + (f", theta {theta:g}" if theta != 1.0 else "") + (", M1-corrected" if lattice else ""))
         ax.plot([p["pressure_over_rho_g_H"][k] for k in sel], depth, "o-", ms=3, label=label)
         ax_err.plot([p["pressure_over_rho_g_H"][k] - p["hydrostatic_over_rho_g_H"][k] for k in sel], depth, "o-", ms=3)
     ax.plot([0, 1], [0, 1], "k--", lw=0.8, label="rho g (H - y)")
