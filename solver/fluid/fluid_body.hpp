@@ -40,9 +40,10 @@ struct FluidOptions {
   DensityReinitialisation density = DensityReinitialisation::Internal;
   PressureReference pressure_reference = PressureReference::Zero;
   // theta of the density re-initialisation once per advection step (Internal and FreeSurface),
-  // rho <- rho + theta (rho_sum - rho): 1, the paper's, replaces the continuity equation's density by
-  // the summation; below 1 the summation pulls it towards itself by that fraction, which filters the
-  // summation's response to the particles' arrangement (reports/pressure.md section 11).
+  // rho <- rho + theta (rho_target - rho) (density_summation.hpp): 1, the paper's, replaces the
+  // carried density by the summation; below 1 the summation pulls it towards itself by that
+  // fraction, which filters the summation's response to the particles' arrangement
+  // (reports/pressure.md section 11).
   Real density_relaxation = 1.0;
   Real transport_velocity_alpha = 0.0;  // 0: no transport-velocity correction
   // Initial particle relaxation (transport_velocity.hpp): this many shifts of the fluid particles
