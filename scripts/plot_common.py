@@ -25,6 +25,13 @@ def load_summary(directory):
         return json.load(f)
 
 
+def project_reference(name):
+    """A reference file the project typed in from a paper (reference-data/NAME), parsed as JSON."""
+    project = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    with open(os.path.join(project, "reference-data", name)) as f:
+        return json.load(f)
+
+
 def read_csv(path):
     """Columns of a CSV with a header line, as lists of floats keyed by column name."""
     with open(path) as f:

@@ -5,14 +5,11 @@ noise per setting) and DIRECTORY/diagnosis/density_relaxation_cfd3_lift.csv (CFD
 over 0.5, t = 40-80, D/dp = 20), writes DIRECTORY/pressure_density_relaxation.png.
 Usage: /usr/bin/python3 scripts/plot_density_relaxation.py reports/pressure
 """
-import json
 import os
 
-from plot_common import plt, read_csv, save, suite_dir
+from plot_common import plt, project_reference, read_csv, save, suite_dir
 
-project = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-with open(os.path.join(project, "reference-data", "turek_hron_cfd.json")) as f:
-    CFD3_LIFT_AMPLITUDE = json.load(f)["CFD3"]["lift_amplitude"]  # Turek & Hron (2006)
+CFD3_LIFT_AMPLITUDE = project_reference("turek_hron_cfd.json")["CFD3"]["lift_amplitude"]  # Turek & Hron (2006)
 
 directory = suite_dir()
 tank = read_csv(os.path.join(directory, "diagnosis", "density_relaxation_tank.csv"))

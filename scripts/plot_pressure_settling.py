@@ -4,15 +4,12 @@ Reads DIRECTORY/diagnosis/cfd2_settling.csv (drag and lift in bins of 0.25 time 
 rows per run) and DIRECTORY/diagnosis/cfd2_windows.csv (means over windows per run), writes
 DIRECTORY/pressure_cfd2_settling.png. Usage: /usr/bin/python3 scripts/plot_pressure_settling.py reports/pressure
 """
-import json
 import math
 import os
 
-from plot_common import plt, read_csv, save, suite_dir
+from plot_common import plt, project_reference, read_csv, save, suite_dir
 
-project = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-with open(os.path.join(project, "reference-data", "turek_hron_cfd.json")) as f:
-    TUREK_HRON_CFD2_DRAG = json.load(f)["CFD2"]["drag"]  # Turek & Hron (2006)
+TUREK_HRON_CFD2_DRAG = project_reference("turek_hron_cfd.json")["CFD2"]["drag"]  # Turek & Hron (2006)
 
 
 def block_means(values, size=4):
