@@ -36,16 +36,16 @@ for ax, criterion, title in ((noise, 2.0, "pressure noise, % of rho g H"), (prof
     ax.legend(fontsize=7)
 noise.set_yscale("log")
 
-for column, style in (("lift_summation_c20", "C0-"), ("lift_relaxation_0.1_c20", "C1-"),
-                      ("lift_summation_c40", "C0:"), ("lift_relaxation_0.1_c40", "C1:")):
-    _, treatment, *rest = column.split("_")
-    c = rest[-1].lstrip("c")
-    label = ("summation" if treatment == "summation" else "theta = 0.1") + f", c = {c} U0"
+for column, style, label in (("lift_summation_c20", "C0-", "summation, c = 20 U0"),
+                             ("lift_relaxation_0.1_c20", "C1-", "theta = 0.1, c = 20 U0"),
+                             ("lift_summation_c40", "C0:", "summation, c = 40 U0"),
+                             ("lift_relaxation_0.1_c40", "C1:", "theta = 0.1, c = 40 U0"),
+                             ("lift_relaxation_0.1_c20_acoustic_cfl_0.15", "C2-", "theta = 0.1, c = 20 U0, acoustic CFL 0.15")):
     history.plot(lift["time"], lift[column], style, lw=0.9, label=label)
 for sign in (1, -1):
     history.axhline(sign * CFD3_LIFT_AMPLITUDE, color="k", ls="--", lw=0.8, label="Turek & Hron amplitude" if sign > 0 else None)
 history.set_xlabel("t (D / U0)")
 history.set_ylabel("lift (rho U0^2 D), averaged over 0.5")
 history.set_title("CFD3, D/dp = 20, periodic channel", fontsize=9)
-history.legend(fontsize=7, ncol=3, loc="lower left")
+history.legend(fontsize=7, ncol=2, loc="lower left")
 save(fig, directory, "pressure_density_relaxation.png")
