@@ -31,6 +31,8 @@ struct TankStatistics {
   std::vector<long> count = std::vector<long>(kDepthBins, 0);
 };
 
+constexpr double kFilteredRelaxation = 0.1;  // theta of the tank's filtered variant (below)
+
 // One tank run: its resolution H/dp, sound speed factor, whether the pressure pass refreshes its
 // pair geometry (fluid.refresh_pair_geometry; reports/pressure.md section 9), and the filtered
 // variant of section 11: the summation's reset relaxed to theta = 0.1 (fluid.density_relaxation)
@@ -39,8 +41,8 @@ struct TankCase {
   int resolution, factor;
   bool refresh = false;
   bool filtered = false;
+  double density_relaxation() const { return filtered ? kFilteredRelaxation : 1.0; }
 };
-constexpr double kFilteredRelaxation = 0.1;
 
 SuiteRun run_tank(const SuiteContext& ctx, const TankCase& c, double settle, double end_time, CsvTable& profile) {
   const int resolution = c.resolution, factor = c.factor;
@@ -83,7 +85,7 @@ SuiteRun run_tank(const SuiteContext& ctx, const TankCase& c, double settle, dou
   SuiteRun r;
   r.case_name = name;
   r.config = {{"resolution", resolution}, {"sound_speed_factor", factor}, {"settle_time", settle}, {"end_time", end_time},
-              {"refresh_pair_geometry", c.refresh}, {"density_relaxation", c.filtered ? kFilteredRelaxation : 1.0},
+              {"refresh_pair_geometry", c.refresh}, {"density_relaxation", c.density_relaxation()},
               {"pressure_lattice_correction", c.filtered}, {"scene", "hydrostatic_tank.json"}};
   r.cost = cost_json(run);
   r.compressibility = compressibility_record(run);
@@ -101,7 +103,7 @@ SuiteRun run_tank(const SuiteContext& ctx, const TankCase& c, double settle, dou
     samples += stats.count[b];
     const double depth = stats.depth_sum[b] / n;
     profile.add_row({static_cast<double>(resolution), static_cast<double>(factor), c.refresh ? 1.0 : 0.0,
-                     c.filtered ? kFilteredRelaxation : 1.0, c.filtered ? 1.0 : 0.0, depth / H,
+                     c.density_relaxation(), c.filtered ? 1.0 : 0.0, depth / H,
                      (rho_g * depth + mean) / scale, rho_g * depth / scale});
   }
   const ObserverSeries& bottom = series_named(run.result.series, "bottom");
