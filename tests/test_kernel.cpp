@@ -43,6 +43,19 @@ TEST_CASE("Wendland C2 derivative matches a finite difference of W", "[kernel]")
   CHECK(k.W(0.0) == Approx(7.0 / (4.0 * kPi * 0.37 * 0.37)));
 }
 
+TEST_CASE("Wendland C2 second derivative matches a finite difference of dW/dr", "[kernel]") {
+  const WendlandC2 k(0.37);
+  // 0.5 is where it changes sign (1 - 2q); it is away from the samples.
+  for (double q : {0.05, 0.3, 0.9, 1.4, 1.99}) {
+    const double r = q * k.h(), e = 1e-6 * k.h();
+    const double fd = (k.dW(r + e) - k.dW(r - e)) / (2 * e);
+    CHECK(k.d2W(r) == Approx(fd).epsilon(1e-6));
+  }
+  CHECK(k.d2W(0.25 * k.h()) < 0.0);  // concave at its peak
+  CHECK(k.d2W(k.h()) > 0.0);
+  CHECK(k.d2W(k.cutoff()) == 0.0);
+}
+
 TEST_CASE("The continuum gradient moment is -2, so SPH gradients and Laplacians are consistent", "[kernel]") {
   // integral of r W'(r) d^2r = -2: the identity behind the pressure-gradient and Morris operators.
   const WendlandC2 k(0.5);

@@ -14,8 +14,8 @@ namespace {
 
 // Two free 0.5 x 0.5 blocks (dp = 0.05, 100 particles each), 0.1 apart, moving towards each other
 // at +-v0 (solid sound speed 28.9 m/s). No fluid, no gravity.
-LoadedScene colliding_blocks(double v0, bool contact) {
-  const std::string block = R"("dp": 0.05, "h_over_dp": 1.3,
+LoadedScene colliding_blocks(double v0, bool contact, const std::string& gradient_correction = "second_order") {
+  const std::string block = R"("dp": 0.05, "h_over_dp": 1.3, "gradient_correction": ")" + gradient_correction + R"(",
       "material": {"model": "neo_hookean", "density": 1000, "youngs_modulus": 1e6, "poisson_ratio": 0.3})";
   LoadedScene s = scene_from(R"({
     "domain": {"lower": [-3, -3], "upper": [4, 4]},
@@ -53,9 +53,12 @@ double mean_x_velocity(const SolidBody& s) { return solid_momentum(s).x() / (s.p
 }  // namespace
 
 TEST_CASE("Two elastic blocks in contact bounce off each other, conserving momentum and energy", "[solid][contact]") {
-  // v0 = 0.5 and 3 m/s: Mach 0.017 and 0.10 of the solid; the faster one presses hardest.
+  // v0 = 0.5 and 3 m/s: Mach 0.017 and 0.10 of the solid; the faster one presses hardest. With the
+  // default weights and with the paper's B0, whose step is twice as long: there the contact's own
+  // stiffness sets the sub-step (solid_dynamics.cpp); without it B0 lost 8 % of the energy at 3 m/s.
+  for (const std::string correction : {"second_order", "first_order"})
   for (double v0 : {0.5, 3.0}) {
-    LoadedScene s = colliding_blocks(v0, true);
+    LoadedScene s = colliding_blocks(v0, true, correction);
     Simulation& sim = *s.simulation;
     const double dp = 0.05;
     const double mass = sim.solids()[0].particles.mass[0] * 100;
@@ -66,7 +69,7 @@ TEST_CASE("Two elastic blocks in contact bounce off each other, conserving momen
       s.schedule->advance(sim, std::min(end - sim.time, 2e-3));  // ~2 sub-steps: watch the closest pair
       closest = std::min(closest, closest_pair(sim.solids()[0], sim.solids()[1]));
     }
-    INFO("v0 = " << v0 << ", closest pair " << closest / dp << " dp");
+    INFO(correction << ", v0 = " << v0 << ", closest pair " << closest / dp << " dp");
     // No passing through: the contact begins at one spacing; at most half of it is taken up (measured
     // closest 0.76 and 0.63 dp).
     CHECK(closest > 0.5 * dp);
@@ -79,8 +82,8 @@ TEST_CASE("Two elastic blocks in contact bounce off each other, conserving momen
     CHECK(u_left < -0.5 * v0);
     CHECK(closest_pair(sim.solids()[0], sim.solids()[1]) > dp);
     // Energy: no damping anywhere, so kinetic + strain energy after the contact ends equal the
-    // initial kinetic energy but for the Verlet scheme's error (second order; measured 0.02 % and
-    // 0.13 %, bound 3 %).
+    // initial kinetic energy but for the Verlet scheme's error (measured 0.02 % and 0.12 %; with B0
+    // 0.06 % and 2.4 %; bound 3 %).
     const double drift = std::abs(total_energy(sim) - energy0) / energy0;
     INFO("energy drift " << drift);
     CHECK(drift < 0.03);

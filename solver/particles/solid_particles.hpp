@@ -29,6 +29,7 @@ struct SolidParticles {
   Vec2Array acc_ave;     // acceleration averaged likewise
   Vec2Array pos_acoustic_start;  // position at the start of the current acoustic step
   Vec2Array vel_acoustic_start;  // velocity at the start of the current acoustic step
+  RealArray contact_stiffness;   // contacts' stiffness of the last sub-step, mass-weighted (solid_contact.hpp)
   std::vector<std::uint8_t> constrained;  // 1: clamped (held at pos0 with zero velocity)
 
   // The one list of fields: resize and the checkpoint go through it. Particles is SolidParticles or
@@ -42,6 +43,7 @@ struct SolidParticles {
     visit(s.vel_ave, "averaged velocities"); visit(s.acc_ave, "averaged accelerations");
     visit(s.pos_acoustic_start, "acoustic-step start positions");
     visit(s.vel_acoustic_start, "acoustic-step start velocities");
+    visit(s.contact_stiffness, "contact stiffnesses");
   }
   template <class Particles, class Visit>
   static void for_each_field(Particles& s, Visit&& visit) {

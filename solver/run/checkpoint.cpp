@@ -11,7 +11,8 @@ namespace mrsph {
 namespace {
 
 constexpr char kMagic[8] = {'M', 'R', 'S', 'P', 'H', 'C', 'K', '1'};
-constexpr std::uint32_t kVersion = 3;  // 2: the compressibility record; 3: open boundaries (particle count, zones, ledgers)
+constexpr std::uint32_t kVersion = 4;  // 2: the compressibility record; 3: open boundaries (particle count, zones, ledgers);
+                                       // 4: the solids' contact stiffnesses
 
 std::string read_all(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);

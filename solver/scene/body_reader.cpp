@@ -170,7 +170,8 @@ SolidBody read_solid(const SceneNode& node, const DomainBox& box, double& budget
   solid.options.cfl = node.positive_or("cfl", solid.options.cfl);
   solid.options.damping_coefficient = node.non_negative_or("damping", solid.options.damping_coefficient);
   solid.options.gradient_correction =
-      gradient_correction_from_name(node.choice_or("gradient_correction", {"first_order", "second_order"}, "second_order"));
+      gradient_correction_from_name(node.choice_or(
+          "gradient_correction", {"first_order", "second_order", "second_order_with_corners"}, "second_order"));
   ShapePtr clamp, rigid;
   if (node.has("clamp")) clamp = read_region(node, "clamp");
   if (node.has("rigid")) rigid = read_region(node, "rigid");

@@ -49,20 +49,26 @@ void Simulation::initialise() {
     inner.build(wall.particles.pos, grid, wall.kernel, /*exclude_self=*/true);
     wall.particles.normal = normals_from_kernel_gradient(wall.particles.vol, inner);
   }
-  for (SolidBody& solid : solids_) initialise_solid(solid);
+  // Bodies in contact first: their gradient weights depend on it (initialise_solid).
   for (SolidContact& contact : solid_contacts) {
     if (contact.second_is_wall) {
       if (contact.first >= solids_.size() || contact.second >= walls_.size())
         throw std::logic_error("Simulation: a wall contact must join a solid body and a wall");
-      const WallBody& wall = walls_[contact.second];
-      prepare_wall_contact(contact, solids_[contact.first], wall.particles, wall.dp);
       solids_[contact.first].in_contact = true;
       continue;
     }
     if (contact.first >= solids_.size() || contact.second >= solids_.size() || contact.first == contact.second)
       throw std::logic_error("Simulation: a solid contact must join two different solid bodies");
-    prepare_solid_contact(contact, solids_[contact.first], solids_[contact.second]);
     solids_[contact.first].in_contact = solids_[contact.second].in_contact = true;
+  }
+  for (SolidBody& solid : solids_) initialise_solid(solid);
+  for (SolidContact& contact : solid_contacts) {
+    if (contact.second_is_wall) {
+      const WallBody& wall = walls_[contact.second];
+      prepare_wall_contact(contact, solids_[contact.first], wall.particles, wall.dp);
+    } else {
+      prepare_solid_contact(contact, solids_[contact.first], solids_[contact.second]);
+    }
   }
 
   if (!fluid_) return;

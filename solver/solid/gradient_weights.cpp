@@ -13,7 +13,9 @@ namespace mrsph {
 GradientCorrection gradient_correction_from_name(const std::string& name) {
   if (name == "first_order") return GradientCorrection::FirstOrder;
   if (name == "second_order") return GradientCorrection::SecondOrder;
-  throw std::invalid_argument("unknown gradient correction '" + name + "', expected \"first_order\" or \"second_order\"");
+  if (name == "second_order_with_corners") return GradientCorrection::SecondOrderWithCorners;
+  throw std::invalid_argument("unknown gradient correction '" + name +
+                              "', expected \"first_order\", \"second_order\" or \"second_order_with_corners\"");
 }
 
 namespace {
@@ -44,6 +46,23 @@ void linear_weights(const NeighborList& reference, std::size_t a, const RealArra
   });
   B = regularised_inverse(M);
   for_each_pair(reference, a, [&](Index k, const Neighbor& nb) { w[k] = pair_factor(vol0, nb) * (B * (-nb.r * nb.e)); });
+}
+
+// A corner or tip of the outline: the support's normalised first moment |sum_b phi_ab d| / sum_b
+// phi_ab |d| above kCornerMoment. For a continuous support cut to a wedge of angle alpha it is
+// 2 sin(alpha/2) / alpha: 0 inside, 2/pi = 0.64 at a straight surface, 0.90 at a right-angled corner.
+// On a lattice the particle's own row lowers it: at h = 1.15-1.3 dp a straight surface gives 0.42-0.45,
+// a lattice step on a curved outline 0.56-0.66, a right-angled corner 0.76-0.77.
+constexpr Real kCornerMoment = 0.7;
+bool at_corner(const NeighborList& reference, std::size_t a, const RealArray& vol0) {
+  Vec2 moment = Vec2::Zero();
+  Real scale = 0.0;
+  for_each_pair(reference, a, [&](Index, const Neighbor& nb) {
+    const Real phi = pair_factor(vol0, nb);
+    moment -= phi * nb.r * Vec2(nb.e);
+    scale += phi * nb.r;
+  });
+  return scale > 0.0 && moment.norm() > kCornerMoment * scale;
 }
 
 // Exact for quadratic fields: the first two rows of the 5 x 5 moment matrix's inverse. False (weights
@@ -91,11 +110,24 @@ GradientWeights compute_gradient_weights(const NeighborList& reference, const Re
   std::vector<std::uint8_t> second(n, 0);
   parallel_for_each(n, [&](std::size_t a) {
     linear_weights(reference, a, vol0, g.B[a], g.w);
-    if (correction == GradientCorrection::SecondOrder) second[a] = quadratic_weights(reference, a, vol0, h, g.w) ? 1 : 0;
+    const bool quadratic = correction == GradientCorrection::SecondOrderWithCorners ||
+                           (correction == GradientCorrection::SecondOrder && !at_corner(reference, a, vol0));
+    if (quadratic) second[a] = quadratic_weights(reference, a, vol0, h, g.w) ? 1 : 0;
   });
   reverse_weights(reference, g);
   for (auto s : second) g.second_order_count += s;
   return g;
+}
+
+void calibrate_time_step(GradientWeights& g, const NeighborList& reference, const RealArray& vol0, const RealArray& mass,
+                         const std::vector<std::uint8_t>& constrained, Real h, Real lambda, Real shear_modulus) {
+  const GradientWeights paper = compute_gradient_weights(reference, vol0, h, GradientCorrection::FirstOrder);
+  const Real omega2_paper = highest_frequency_squared(reference, paper.w, paper.w_reverse, paper.w_sum, vol0, mass,
+                                                      constrained, lambda, shear_modulus);
+  const Real omega2_used =
+      highest_frequency_squared(reference, g.w, g.w_reverse, g.w_sum, vol0, mass, constrained, lambda, shear_modulus);
+  if (omega2_used > omega2_paper && omega2_paper > 0.0) g.time_step_scale = std::sqrt(omega2_paper / omega2_used);
+  g.highest_frequency = std::sqrt(omega2_used);
 }
 
 Real highest_frequency_squared(const NeighborList& reference, const Vec2Array& w, const Vec2Array& w_reverse,

@@ -13,6 +13,12 @@
 // surfaces and the weights there equal the paper's. Where the quadratic fit is ill-conditioned (a
 // particle with too few neighbours) the linear weights are used.
 //
+// Corners keep the paper's weights. Where the support is cut on two sides (a convex corner or tip
+// of the outline), two traction-free faces with independent normals make the stress vanish (P N1 =
+// P N2 = 0), so the gradient's accuracy there carries no stiffness; the quadratic fit over a quarter
+// of a support only adds weights: it raised the highest eigenfrequency of the gate, the plate and
+// FSI2's beam 1.3 times, and with it the solid's step count (reports/performance.md section 12).
+//
 // The internal force is the variational one for any such weights,
 //   f_a = -dE/dr_a = V_a P_a sum_b w_ab - sum_b V_b P_b w_ba,  E = sum_c V_c Psi(F_c),
 // which conserves linear and angular momentum and energy; for the paper's weights it is exactly
@@ -29,7 +35,9 @@
 
 namespace mrsph {
 
-enum class GradientCorrection { FirstOrder, SecondOrder };
+// FirstOrder: the paper's B0 everywhere. SecondOrder: quadratic fits except at corners (the default).
+// SecondOrderWithCorners: quadratic fits at corners too (this project's earlier default; for comparison).
+enum class GradientCorrection { FirstOrder, SecondOrder, SecondOrderWithCorners };
 
 GradientCorrection gradient_correction_from_name(const std::string& name);  // throws std::invalid_argument
 
@@ -85,5 +93,10 @@ Real highest_frequency_squared(const NeighborList& reference, const Vec2Array& w
 
 GradientWeights compute_gradient_weights(const NeighborList& reference, const RealArray& vol0, Real h,
                                          GradientCorrection correction);
+
+// Keeps the paper's stability margin for weights other than its own: sets g.time_step_scale to
+// omega_max(B0) / omega_max(g) (at most 1) and g.highest_frequency to omega_max(g).
+void calibrate_time_step(GradientWeights& g, const NeighborList& reference, const RealArray& vol0, const RealArray& mass,
+                         const std::vector<std::uint8_t>& constrained, Real h, Real lambda, Real shear_modulus);
 
 }  // namespace mrsph

@@ -23,17 +23,20 @@ struct ContactSide {
   const Vec2Array& pos;
   const RealArray& vol;
   const std::vector<std::uint8_t>* excluded = nullptr;
-  Vec2Array* force = nullptr;
+  Vec2Array* force = nullptr;          // null: a fixed side (a wall), or forces not wanted
+  RealArray* stiffness = nullptr;      // with force: the side's mass-weighted contact stiffness
 
   bool takes_part(std::size_t i) const { return excluded == nullptr || (*excluded)[i] == 0; }
 };
 
 ContactSide side_of(const SolidBody& s) { return {s.particles.pos, s.particles.vol0}; }
-ContactSide side_of(SolidBody& s) { return {s.particles.pos, s.particles.vol0, nullptr, &s.external_force}; }
+ContactSide side_of(SolidBody& s) {
+  return {s.particles.pos, s.particles.vol0, nullptr, &s.external_force, &s.particles.contact_stiffness};
+}
 ContactSide wall_side(const SolidContact& c) { return {c.wall_pos, c.wall_vol}; }
 // A solid against a wall: its clamped particles are attached to that wall (header).
 ContactSide solid_side_at_wall(SolidBody& s) {
-  return {s.particles.pos, s.particles.vol0, &s.particles.constrained, &s.external_force};
+  return {s.particles.pos, s.particles.vol0, &s.particles.constrained, &s.external_force, &s.particles.contact_stiffness};
 }
 ContactSide solid_side_at_wall(const SolidBody& s) { return {s.particles.pos, s.particles.vol0, &s.particles.constrained}; }
 
@@ -70,18 +73,39 @@ void contact_overlaps(const SolidContact& contact, const ContactSide& a, const C
   });
 }
 
+// The pair's stiffness, the largest eigenvalue of the Jacobian of its force (header): along the line of
+// centres -dF/dr = V_a V_b [k_c (V_a + V_b) W'^2 + (p_a + p_b) W''] (the pair's own share of p_a and p_b
+// moves with r), across it F / r.
+Real pair_stiffness(const SolidContact& contact, Real vol_a, Real vol_b, Real pressure_sum, Real r) {
+  const Real dW = contact.kernel.dW(r);
+  const Real along = vol_a * vol_b * (contact.stiffness * (vol_a + vol_b) * dW * dW + pressure_sum * contact.kernel.d2W(r));
+  const Real across = -vol_a * vol_b * pressure_sum * dW / r;
+  return std::max(std::abs(along), std::abs(across));
+}
+
 void add_forces(const SolidContact& contact, const ContactSide& a, const ContactSide& b) {
   if (contact.candidates.empty()) return;
   RealArray phi_a, phi_b;
   contact_overlaps(contact, a, b, phi_a, phi_b);
+  // Gershgorin's bound on the contact's highest frequency: a particle's row of M^-1/2 K M^-1/2 sums
+  // K_ab / m_a for itself and K_ab / sqrt(m_a m_b) for a moving partner; for bodies of one spacing and
+  // density, 2 K_ab / m_a against a moving body and K_ab / m_a against a fixed one. Stored times m_a.
+  const Real weight_a = b.force ? 2.0 : 1.0, weight_b = a.force ? 2.0 : 1.0;
   for_each_listed_pair(contact.candidates, [&](Index i, Index j) {
     const Vec2 d = a.pos[i] - b.pos[j];
     const Real r = d.norm();
     if (r >= contact.kernel.cutoff() || r == 0.0) return;
     const Real pressure_sum = contact.stiffness * (phi_a[i] + phi_b[j]);
     const Vec2 f = -(a.vol[i] * b.vol[j] * pressure_sum * contact.kernel.dW(r) / r) * d;
-    if (a.force) (*a.force)[i] += f;
-    if (b.force) (*b.force)[j] -= f;
+    const Real k = pair_stiffness(contact, a.vol[i], b.vol[j], pressure_sum, r);
+    if (a.force) {
+      (*a.force)[i] += f;
+      (*a.stiffness)[i] += weight_a * k;
+    }
+    if (b.force) {
+      (*b.force)[j] -= f;
+      (*b.stiffness)[j] += weight_b * k;
+    }
   });
 }
 

@@ -14,9 +14,10 @@
 // bodies). Why that scale: to stop a body arriving at speed v the contact pressure must reach its
 // acoustic impedance times v, rho0 c_S v, so the overlap grows as phi ~ v / c_S: small at the speeds of
 // interest (two blocks meeting at Mach 0.1 keep their closest particles 0.63 dp apart, at Mach 0.017
-// 0.76 dp; with k_c 1/500 of it they went through each other). Stability: during a hard contact the
-// acceleration term of the solid criterion (Eq. 34) shortens the sub-step; measured stable, energy kept
-// to 0.4 %, up to 20 rho0 c_S^2 (the collision of tests/test_solid_contact.cpp).
+// 0.76 dp; with k_c 1/500 of it they went through each other). Stability: the force is that of the
+// potential sum_a V_a k_c phi_a^2 / 2, whose stiffness grows as the overlap deepens (at 0.63 dp a pair
+// alone has omega dt = 2.9 at the paper's solid step); each particle's share of it (add_contact_forces)
+// enters the solid's time-step criterion (solid_dynamics.cpp), so the sub-step shortens in contact.
 // A fixed wall as the second body: the same penalty with the wall's dummy particles as b, whose
 // reaction is not applied (the wall is fixed). The solid's clamped particles take no part: the clamp
 // is their attachment to the wall, where they sit inside the contact's reach for ever. Without it a
