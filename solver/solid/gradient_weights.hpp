@@ -17,7 +17,8 @@
 // of the outline), two traction-free faces with independent normals make the stress vanish (P N1 =
 // P N2 = 0), so the gradient's accuracy there carries no stiffness; the quadratic fit over a quarter
 // of a support only adds weights: it raised the highest eigenfrequency of the gate, the plate and
-// FSI2's beam 1.3 times, and with it the solid's step count (reports/performance.md section 12).
+// FSI2's beam 1.23-1.31 times, and with it the solid's step count (reports/performance.md section 12).
+// Bodies in contact keep the quadratic fits at corners (solid_dynamics.cpp, correction_in_use).
 //
 // The internal force is the variational one for any such weights,
 //   f_a = -dE/dr_a = V_a P_a sum_b w_ab - sum_b V_b P_b w_ba,  E = sum_c V_c Psi(F_c),
