@@ -14,6 +14,7 @@
 #include <tbb/task_group.h>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
@@ -54,15 +55,27 @@ class LoopTeam {
   // The maximum of value(i) over [0, n) (lowest for n == 0); value(i) may update item i.
   template <class Value>
   double max_over(std::size_t n, std::size_t chunk, Value&& value, double lowest) {
+    return max_over_each<1>(n, chunk, [&](std::size_t i) { return std::array<double, 1>{static_cast<double>(value(i))}; },
+                            lowest)[0];
+  }
+
+  // The same for K values at once (value(i) returns std::array<double, K>), each maximised alone.
+  template <std::size_t K, class Value>
+  std::array<double, K> max_over_each(std::size_t n, std::size_t chunk, Value&& value, double lowest) {
     chunk = fitting_chunk(n, chunk);
-    chunk_max_.assign((n + chunk - 1) / chunk, lowest);
+    chunk_max_.assign(K * ((n + chunk - 1) / chunk), lowest);
     run_loop(n, chunk, [&](std::size_t c, std::size_t begin, std::size_t end) {
-      double m = lowest;
-      for (std::size_t i = begin; i < end; ++i) m = std::max(m, static_cast<double>(value(i)));
-      chunk_max_[c] = m;
+      std::array<double, K> m;
+      m.fill(lowest);
+      for (std::size_t i = begin; i < end; ++i) {
+        const std::array<double, K> v = value(i);
+        for (std::size_t k = 0; k < K; ++k) m[k] = std::max(m[k], v[k]);
+      }
+      std::copy(m.begin(), m.end(), chunk_max_.begin() + K * c);
     });
-    double m = lowest;
-    for (double x : chunk_max_) m = std::max(m, x);
+    std::array<double, K> m;
+    m.fill(lowest);
+    for (std::size_t j = 0; j < chunk_max_.size(); ++j) m[j % K] = std::max(m[j % K], chunk_max_[j]);
     return m;
   }
 

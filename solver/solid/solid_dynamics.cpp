@@ -5,6 +5,7 @@
 #include "geometry/particle_normals.hpp"
 #include "interaction/pair_sweep.hpp"
 #include "solid/solid_contact.hpp"
+#include "solid/step_criterion.hpp"
 #include "core/step_splitting.hpp"
 
 #include <algorithm>
@@ -18,25 +19,6 @@ namespace {
 // Particles per chunk of a solid loop (core/loop_team.hpp): a few hundred nanoseconds of work per
 // particle, so a claim (one compare-and-swap) is a small part of a chunk.
 constexpr std::size_t kSolidChunk = 64;
-
-// Largest inverse time scale of the criterion over free particles: max(sqrt(|a|/h), (c + |v|)/h), the
-// second combined with the particle's contact frequency omega_c (solid_contact.cpp) as stiffnesses add,
-// sqrt(((c + |v|)/h)^2 + (scale omega_c / 2)^2): a contact alone gives dt <= 2 cfl / omega_c, omega_c dt
-// <= 1.2 at cfl 0.6 (position Verlet is stable below 2). The acceleration term alone does not hold a
-// hard contact: blocks meeting at Mach 0.1 each lost 8 % of their energy at the paper's B0 step.
-Real particle_rate(const SolidBody& solid, std::size_t a) {
-  const SolidParticles& s = solid.particles;
-  if (s.constrained[a]) return 0.0;
-  const Real contact_frequency = std::sqrt(s.contact_stiffness[a] / s.mass[a]);
-  const Real acoustic = (solid.material.sound_speed() + s.vel[a].norm()) / solid.h();
-  const Real contact = 0.5 * solid.weights.time_step_scale * contact_frequency;
-  return std::max(std::sqrt(s.acc[a].norm() / solid.h()), std::sqrt(acoustic * acoustic + contact * contact));
-}
-
-Real criterion_from_rate(const SolidBody& solid, Real rate) {
-  return solid.options.cfl * solid.weights.time_step_scale / std::max(rate, solid.material.sound_speed() / solid.h());
-}
-
 
 Mat2 deformation_rate(const SolidBody& solid, std::size_t a) {
   const SolidParticles& s = solid.particles;
@@ -207,31 +189,31 @@ Real momentum_pass(LoopTeam& team, SolidBody& solid, Real dt, const Vec2& g) {
       s.acc[a] = (internal_force(solid, a) + s.force_prior[a] + solid.external_force[a]) / s.mass[a] + g;
     });
     if (solid.rigid) project_rigid(solid);
-    return team.max_over(solid.active.size(), kSolidChunk, [&](std::size_t k) {
+    return rate_from_terms(solid, team.max_over_each<3>(solid.active.size(), kSolidChunk, [&](std::size_t k) {
       const Index a = solid.active[k];
       if (s.constrained[a]) {
         s.vel[a].setZero();
         s.pos[a] = s.pos0[a];
-        return 0.0;
+        return RateTerms{kNoRate, kNoRate, kNoRate};
       }
       s.vel[a] += dt * s.acc[a];
       s.pos[a] += 0.5 * dt * s.vel[a];
-      return particle_rate(solid, a);
-    }, 0.0);
+      return rate_terms(solid, a);
+    }, kNoRate));
   }
-  return team.max_over(solid.active.size(), kSolidChunk, [&](std::size_t k) {
+  return rate_from_terms(solid, team.max_over_each<3>(solid.active.size(), kSolidChunk, [&](std::size_t k) {
     const Index a = solid.active[k];
     if (s.constrained[a]) {
       s.vel[a].setZero();
       s.acc[a].setZero();
       s.pos[a] = s.pos0[a];
-      return 0.0;
+      return RateTerms{kNoRate, kNoRate, kNoRate};
     }
     s.acc[a] = (internal_force(solid, a) + s.force_prior[a]) / s.mass[a] + g;
     s.vel[a] += dt * s.acc[a];
     s.pos[a] += 0.5 * dt * s.vel[a];
-    return particle_rate(solid, a);
-  }, 0.0);
+    return rate_terms(solid, a);
+  }, kNoRate));
 }
 
 // dF/dt from the new velocities; F += h_end dF/dt ends this sub-step. Then the first half of the
