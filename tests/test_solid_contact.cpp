@@ -55,7 +55,7 @@ double mean_x_velocity(const SolidBody& s) { return solid_momentum(s).x() / (s.p
 TEST_CASE("Two elastic blocks in contact bounce off each other, conserving momentum and energy", "[solid][contact]") {
   // v0 = 0.5 and 3 m/s: Mach 0.017 and 0.10 of the solid; the faster one presses hardest. With the
   // default weights and with the paper's B0, whose step is twice as long: there the contact's own
-  // stiffness sets the sub-step (solid_dynamics.cpp); without it B0 lost 8 % of the energy at 3 m/s.
+  // stiffness sets the sub-step (solid/step_criterion.hpp); without it B0 lost 8 % of the energy at 3 m/s.
   for (const std::string correction : {"second_order", "first_order"})
   for (double v0 : {0.5, 3.0}) {
     LoadedScene s = colliding_blocks(v0, true, correction);

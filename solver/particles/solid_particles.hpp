@@ -29,7 +29,7 @@ struct SolidParticles {
   Vec2Array acc_ave;     // acceleration averaged likewise
   Vec2Array pos_acoustic_start;  // position at the start of the current acoustic step
   Vec2Array vel_acoustic_start;  // velocity at the start of the current acoustic step
-  RealArray contact_stiffness;   // contacts' stiffness of the last sub-step, mass-weighted (solid_contact.hpp)
+  RealArray contact_stiffness;   // contacts' stiffness at the particle, last sub-step [N/m] (solid_contact.cpp)
   std::vector<std::uint8_t> constrained;  // 1: clamped (held at pos0 with zero velocity)
 
   // The one list of fields: resize and the checkpoint go through it. Particles is SolidParticles or

@@ -24,7 +24,7 @@ struct ContactSide {
   const RealArray& vol;
   const std::vector<std::uint8_t>* excluded = nullptr;
   Vec2Array* force = nullptr;          // null: a fixed side (a wall), or forces not wanted
-  RealArray* stiffness = nullptr;      // with force: the side's mass-weighted contact stiffness
+  RealArray* stiffness = nullptr;      // with force: the contact's stiffness per particle, Gershgorin-weighted
 
   bool takes_part(std::size_t i) const { return excluded == nullptr || (*excluded)[i] == 0; }
 };

@@ -17,7 +17,7 @@
 // 0.76 dp; with k_c 1/500 of it they went through each other). Stability: the force is that of the
 // potential sum_a V_a k_c phi_a^2 / 2, whose stiffness grows as the overlap deepens (at 0.63 dp a pair
 // alone has omega dt = 2.9 at the paper's solid step); each particle's share of it (add_contact_forces)
-// enters the solid's time-step criterion (solid_dynamics.cpp), so the sub-step shortens in contact.
+// enters the solid's time-step criterion (solid/step_criterion.hpp), so the sub-step shortens in contact.
 // A fixed wall as the second body: the same penalty with the wall's dummy particles as b, whose
 // reaction is not applied (the wall is fixed). The solid's clamped particles take no part: the clamp
 // is their attachment to the wall, where they sit inside the contact's reach for ever. Without it a
