@@ -76,11 +76,10 @@ void contact_overlaps(const SolidContact& contact, const ContactSide& a, const C
 // The pair's stiffness, the largest eigenvalue of the Jacobian of its force (header): along the line of
 // centres -dF/dr = V_a V_b [k_c (V_a + V_b) W'^2 + (p_a + p_b) W''] (the pair's own share of p_a and p_b
 // moves with r), across it F / r.
-Real pair_stiffness(const SolidContact& contact, Real vol_a, Real vol_b, Real pressure_sum, Real r) {
-  const Real dW = contact.kernel.dW(r);
-  const Real along = vol_a * vol_b * (contact.stiffness * (vol_a + vol_b) * dW * dW + pressure_sum * contact.kernel.d2W(r));
-  const Real across = -vol_a * vol_b * pressure_sum * dW / r;
-  return std::max(std::abs(along), std::abs(across));
+Real pair_stiffness(const SolidContact& contact, Real vol_a, Real vol_b, Real pressure_sum, Real r, Real dW) {
+  const Real along = contact.stiffness * (vol_a + vol_b) * dW * dW + pressure_sum * contact.kernel.d2W(r);
+  const Real across = -pressure_sum * dW / r;
+  return vol_a * vol_b * std::max(std::abs(along), std::abs(across));
 }
 
 void add_forces(const SolidContact& contact, const ContactSide& a, const ContactSide& b) {
@@ -96,8 +95,9 @@ void add_forces(const SolidContact& contact, const ContactSide& a, const Contact
     const Real r = d.norm();
     if (r >= contact.kernel.cutoff() || r == 0.0) return;
     const Real pressure_sum = contact.stiffness * (phi_a[i] + phi_b[j]);
-    const Vec2 f = -(a.vol[i] * b.vol[j] * pressure_sum * contact.kernel.dW(r) / r) * d;
-    const Real k = pair_stiffness(contact, a.vol[i], b.vol[j], pressure_sum, r);
+    const Real dW = contact.kernel.dW(r);
+    const Vec2 f = -(a.vol[i] * b.vol[j] * pressure_sum * dW / r) * d;
+    const Real k = pair_stiffness(contact, a.vol[i], b.vol[j], pressure_sum, r, dW);
     if (a.force) {
       (*a.force)[i] += f;
       (*a.stiffness)[i] += weight_a * k;
