@@ -90,6 +90,8 @@ struct PressureInteraction {
   Real scale = fluid.options.pressure_lattice_correction ? 1.0 / fluid.lattice_gradient : 1.0;
   Real delta = fluid.options.delta_sph;
   Real diffusion_scale = delta * fluid.h() * fluid.material.sound_speed();
+  Vec2 rest_gradient = fluid.riemann.rest_pressure_gradient(body_acceleration);
+  bool at_rest_state = rest_gradient != Vec2::Zero();  // the continuity term on the departure from it
 
   Sum begin(std::size_t i) const {
     return {f.p[i], f.rho[i], f.p[i] - 2.0 * fluid.reference_pressure, scale * f.vol[i],
@@ -114,7 +116,7 @@ struct PressureInteraction {
   void inner_pair_force(Sum& s, std::size_t i, const Geometry& g) const {
     const Index j = g.j();
     s.force -= (s.vol_scaled * f.vol[j] * (s.p_relative + f.p[j]) * g.gradient_scale()) * g.gradient_vector();
-    if (fluid.riemann.continuity) s.drho += f.vol[j] * fluid.riemann.continuity_term(s.p, f.p[j]) * g.dW();
+    if (fluid.riemann.continuity) s.drho += f.vol[j] * continuity_term(s.p, f.p[j], g) * g.dW();
     if (delta != 0.0)
       s.diffusion += density_diffusion_pair(s.rho, f.rho[j], fluid.density_gradient[i], fluid.density_gradient[j],
                                             f.vol[j], g.neighbor());
@@ -136,7 +138,13 @@ struct PressureInteraction {
     const Vec2 pair = -(s.vol_scaled * b.vol[a] * (s.p_relative + p_d) * g.gradient_scale()) * g.gradient_vector();
     b.pair_force[k] = pair;
     s.force += pair;
-    if (fluid.riemann.continuity) s.drho += b.vol[a] * fluid.riemann.continuity_term(s.p, p_d) * g.dW();
+    if (fluid.riemann.continuity) s.drho += b.vol[a] * continuity_term(s.p, p_d, g) * g.dW();
+  }
+
+  template <class Geometry>
+  Real continuity_term(Real p_i, Real p_j, const Geometry& g) const {
+    return at_rest_state ? fluid.riemann.continuity_term(p_i, p_j, rest_gradient, g.r_ij())
+                         : fluid.riemann.continuity_term(p_i, p_j);
   }
 
   void finish(std::size_t i, const Sum& s) const {

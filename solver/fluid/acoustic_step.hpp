@@ -5,7 +5,9 @@
 //              f^p_i = -V_i sum_j V_j (p_i + p_j) dW_ij e_ij                              (Eq. 28)
 //                      -V_i sum_a V_a (p_i + p^d_ia) dW_ia e_ia                          (Eqs. 21, 30)
 //              p^d_ia = p_i + rho_i max(0, (a^prior_i - abar_a).(r_a - r_i))          (Adami 2012)
-//              drho/dt = rho_i sum_j V_j (p_i - p_j)/Z dW_ij + rho_i sum_a V_a (p_i - p^d_ia)/Z dW_ia
+//              drho/dt = rho_i sum_j V_j (p_i - p_j - rho0 g.r_ij)/Z dW_ij
+//                        + rho_i sum_a V_a (p_i - p^d_ia - rho0 g.r_ia)/Z dW_ia
+//                        (riemann_dissipation.hpp: the rest state's part taken out; the paper has no g here)
 //                        (or, with the fluid option delta_sph, the delta-SPH term D_i of density_diffusion.hpp)
 //              v^{n+1} = v^n + dt (f^p + f^d + F^prior)/m + dt g(t + dt/2)
 // Second half: r^{n+1} = r^{n+1/2} + dt/2 v^{n+1};

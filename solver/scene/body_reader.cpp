@@ -124,6 +124,7 @@ FluidBody read_fluid(const SceneNode& node, const DomainBox& box, double& budget
     fluid.riemann.momentum = r->flag_or("momentum", fluid.riemann.momentum);
     fluid.riemann.damp_separating = r->choice_or("limiter", {"approaching", "separating"}, "approaching") == "separating";
     fluid.riemann.limiter_eta = r->positive_or("eta", 3.0);
+    fluid.riemann.hydrostatic_balance = r->flag_or("hydrostatic_balance", fluid.riemann.hydrostatic_balance);
     r->finish();
   }
   fluid.riemann.configure(m.eos.rho0, m.eos.c0);

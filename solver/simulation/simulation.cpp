@@ -146,6 +146,7 @@ void Simulation::resolve_automatic_fluid_options() {
                         open_boundaries.empty();
   if (o.pressure_reference == PressureReference::Automatic)
     o.pressure_reference = confined ? PressureReference::Mean : PressureReference::Zero;
+  fluid_->riemann.set_periodic_axes(box_.periodic[0], box_.periodic[1]);
 }
 
 void Simulation::relax_fluid_particles() {
