@@ -7,6 +7,13 @@
 //   parabolic channel (Turek & Hron 2006, with the factor 4 the paper drops, CASES.md section 1):
 //     u_x = 1.5 Ubar(t) 4 (y - y0)(H - (y - y0)) / H^2,
 //     Ubar(t) = U0 (1 - cos(pi t / t_ramp)) / 2 for t < t_ramp, else U0;  u_y = 0.
+// Channel drive (`drive_channel`, on by default): while the parabolic profile ramps, the whole
+// fluid is given the body acceleration dUbar/dt along x, the pressure gradient -rho dUbar/dt that
+// accelerates an incompressible channel's fluid as one. Without it only the buffer is set moving:
+// its upstream face, the periodic seam, withdraws like a piston from the fluid at rest behind it,
+// and the seam cavitated (density -51 %, Mach 2.0 in FSI2's ramp over 2; reports/stability.md).
+// The solids do not get the drive's Froude-Krylov share (rho_f / rho_s) dUbar/dt: it acts along
+// the channel, on the bodies here an axial load of 0.08 per unit mass at most, during the ramp.
 #pragma once
 
 #include "boundary/womersley_profile.hpp"
@@ -27,6 +34,7 @@ struct ParabolicInflowProfile {
   Real ramp_time = 0.0;       // t_ramp; 0: no ramp
 
   Real ramp(Real t) const;
+  Real ramp_rate(Real t) const;  // d ramp / dt
   Vec2 velocity(const Vec2& p, Real t) const;
 };
 
@@ -46,6 +54,10 @@ Vec2 inflow_velocity(const InflowProfile& profile, const Vec2& p, Real t);
 struct InflowBuffer {
   ShapePtr region;
   InflowProfile profile;
+  bool drive_channel = true;
+
+  // The channel drive above (zero after the ramp, without one, and for the other profiles).
+  Vec2 channel_acceleration(Real t) const;
 
   // Positions are tested in their periodic image inside the box.
   void apply(FluidParticles& fluid, Real t, const DomainBox& box) const;

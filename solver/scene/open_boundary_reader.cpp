@@ -142,6 +142,7 @@ InflowBuffer read_inflow(const SceneNode& node) {
   InflowBuffer inflow;
   inflow.region = read_region(node, "buffer");
   inflow.profile = read_inflow_profile(node.child("profile"));
+  inflow.drive_channel = node.flag_or("drive_channel", inflow.drive_channel);
   node.finish();
   return inflow;
 }

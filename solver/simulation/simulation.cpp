@@ -94,6 +94,11 @@ void Simulation::initialise() {
   if (!open_boundaries.empty()) impose_buffer_states(*fluid_, open_boundaries, time, 0.0);
 }
 
+Vec2 Simulation::fluid_body_acceleration(Real t) const {
+  const Vec2 g = body_force.at(t);
+  return inflow && box_.periodic[0] ? Vec2(g + inflow->channel_acceleration(t)) : g;
+}
+
 void Simulation::impose_boundary_states(Real dt) {
   if (!fluid_) return;
   if (dt > 0.0 && inflow) inflow->apply(fluid_->particles, time, box_);

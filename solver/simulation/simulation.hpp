@@ -66,6 +66,10 @@ class Simulation {
 
   BodyForce body_force;
   bool body_force_on_solids = true;
+  // The body acceleration of the fluid at time t: the body force and, in a channel periodic along
+  // x, the inflow's channel drive (boundary/inflow.hpp). The solids': the body force, if on_solids.
+  Vec2 fluid_body_acceleration(Real t) const;
+  Vec2 solid_body_acceleration(Real t) const { return body_force_on_solids ? body_force.at(t) : Vec2::Zero(); }
   std::optional<InflowBuffer> inflow;
   std::vector<OpenBoundary> open_boundaries;
   SolidKinematics solid_kinematics = SolidKinematics::Averaged;

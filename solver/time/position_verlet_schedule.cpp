@@ -17,7 +17,7 @@ namespace mrsph {
 
 long long integrate_solid_over(SolidBody& solid, const Simulation& sim, Real t, Real dt) {
   return advance_solid(solid, t, dt, [&](Real time) {
-    return sim.body_force_on_solids ? sim.body_force.at(time) : Vec2::Zero();
+    return sim.solid_body_acceleration(time);
   });
 }
 
@@ -28,7 +28,7 @@ long long integrate_solids_over(Simulation& sim, Real t, Real dt) {
     return count;
   }
   return advance_solids(sim.solids(), sim.solid_contacts, t, dt, [&](Real time) {
-    return sim.body_force_on_solids ? sim.body_force.at(time) : Vec2::Zero();
+    return sim.solid_body_acceleration(time);
   });
 }
 
@@ -52,7 +52,7 @@ Real PositionVerletSchedule::advance(Simulation& sim, Real max_step) {
   std::vector<FluidContact>& contacts = sim.fluid_contacts();
   const NeighborList& inner = sim.fluid_inner();
   const Real t0 = sim.time;
-  const Real Dt = std::min(advection_time_step(fluid, sim.body_force.at(t0)), max_step);
+  const Real Dt = std::min(advection_time_step(fluid, sim.fluid_body_acceleration(t0)), max_step);
 
   // Algorithm 1, once per advection step.
   reinitialise_density(fluid, inner, contacts, fluid.options.density_relaxation);
@@ -71,7 +71,7 @@ Real PositionVerletSchedule::advance(Simulation& sim, Real max_step) {
     const Real dt = step.size;
     last = step.last;
 
-    acoustic_first_half(fluid, inner, contacts, dt, sim.body_force.at(sim.time + 0.5 * dt));
+    acoustic_first_half(fluid, inner, contacts, dt, sim.fluid_body_acceleration(sim.time + 0.5 * dt));
     add_boundary_impulses(contacts, dt);
     for (std::size_t s = 0; s < sim.solids().size(); ++s)
       set_force_from_fluid(sim.solid_contact(s), sim.solids()[s].particles);

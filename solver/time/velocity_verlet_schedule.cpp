@@ -21,7 +21,7 @@ void integrate_solid_velocity_verlet(SolidBody& solid, const Simulation& sim, Re
   for (bool last = false; !last;) {
     const SplitStep step = split_remaining(dt - elapsed, solid_time_step(solid));
     last = step.last;
-    const Vec2 g = sim.body_force_on_solids ? sim.body_force.at(t + elapsed + step.size) : Vec2::Zero();
+    const Vec2 g = sim.solid_body_acceleration(t + elapsed + step.size);
     solid_substep_velocity_verlet(solid, step.size, g);
     elapsed += step.size;
     ++count;
@@ -42,7 +42,7 @@ Real VelocityVerletSchedule::advance(Simulation& sim, Real max_step) {
   std::vector<FluidContact>& contacts = sim.fluid_contacts();
   const NeighborList& inner = sim.fluid_inner();
   const Real t0 = sim.time;
-  const Real Dt = std::min(advection_time_step(fluid, sim.body_force.at(t0)), max_step);
+  const Real Dt = std::min(advection_time_step(fluid, sim.fluid_body_acceleration(t0)), max_step);
 
   reinitialise_density(fluid, inner, contacts, fluid.options.density_relaxation);
   sim.impose_boundary_states(0.0);
@@ -51,7 +51,7 @@ Real VelocityVerletSchedule::advance(Simulation& sim, Real max_step) {
   for (SolidBody& solid : sim.solids()) update_solid_normals(solid);
   // The pair lists were rebuilt: forces of the current state on the new lists.
   advance_density_and_position(fluid, 0.0, 0.0);
-  evaluate_forces(sim, sim.body_force.at(t0));
+  evaluate_forces(sim, sim.fluid_body_acceleration(t0));
   clear_boundary_impulses(contacts);
 
   Real elapsed = 0.0;
@@ -59,7 +59,7 @@ Real VelocityVerletSchedule::advance(Simulation& sim, Real max_step) {
     const SplitStep step = split_remaining(Dt - elapsed, acoustic_time_step(fluid));
     const Real dt = step.size;
     last = step.last;
-    kick(fluid, 0.5 * dt, sim.body_force.at(sim.time));
+    kick(fluid, 0.5 * dt, sim.fluid_body_acceleration(sim.time));
     add_boundary_impulses(contacts, 0.5 * dt);
     advance_position(fluid, dt);
     add_velocity_divergence_and_dissipation(fluid, inner, contacts);
@@ -71,8 +71,8 @@ Real VelocityVerletSchedule::advance(Simulation& sim, Real max_step) {
     }
     elapsed += dt;
     sim.time = last ? t0 + Dt : t0 + elapsed;
-    evaluate_forces(sim, sim.body_force.at(sim.time));
-    kick(fluid, 0.5 * dt, sim.body_force.at(sim.time));
+    evaluate_forces(sim, sim.fluid_body_acceleration(sim.time));
+    kick(fluid, 0.5 * dt, sim.fluid_body_acceleration(sim.time));
     add_boundary_impulses(contacts, 0.5 * dt);
     sim.impose_boundary_states(dt);
     ++sim.steps.acoustic;

@@ -6,7 +6,7 @@
 //     drag and lift on cylinder + beam (mean, half peak-to-peak).
 //   cost: wall and CPU time, particles per body, advection / acoustic / solid steps.
 // Full mode: t = 200, statistics over t >= 100 (as the paper's code's runs here). Quick mode:
-// case III to t = 60: the self-excited oscillation must grow and oscillate at the published St.
+// case III to t = 70: the self-excited oscillation must grow and oscillate at the published St.
 #include "suites/turek_hron_suite.hpp"
 
 #include "io/csv_table.hpp"
@@ -202,12 +202,14 @@ void check_case_iii(const SuiteContext& ctx, const std::map<std::string, FsiResu
   if (III.diverged) {
     summary.check_missing("case III runs to the end", "diverged", "issue 4");
   } else if (ctx.quick) {
-    // The frequency is set while the oscillation grows; the amplitude needs t > 50 to saturate.
-    summary.check_range("case III strouhal (t = 30-60)", metric(III, "strouhal"), range["strouhal"][0],
+    // The frequency is set while the oscillation grows; the amplitude saturates at about t = 60. (It
+    // did at t = 50 while the periodic seam's start-up blast kicked the beam; the channel drive of
+    // boundary/inflow.hpp removed the blast, and the growth starts from a smaller seed: stability.md.)
+    summary.check_range("case III strouhal (t = 40-70)", metric(III, "strouhal"), range["strouhal"][0],
                         range["strouhal"][1], range_source);
-    summary.check_range("case III oscillation has grown: half peak-to-peak of y over t = 50-60",
+    summary.check_range("case III oscillation has grown: half peak-to-peak of y over t = 60-70",
                         metric(III, "amplitude_y_last_10"), 0.6, 1.0,
-                        "the self-excited oscillation reaches about 0.8 D after t = 50 (paper Fig. 5, Turek & Hron)");
+                        "the self-excited oscillation reaches about 0.8 D by t = 60 (paper Fig. 5, Turek & Hron)");
   } else {
     summary.check_range("case III amplitude_y (A_y/D)", metric(III, "amplitude_y"), range["amplitude_y"][0],
                         range["amplitude_y"][1], range_source);
@@ -260,8 +262,8 @@ SuiteSummary run_turek_hron_suite(const SuiteContext& ctx) {
   SuiteSummary summary("turek-hron", ctx.quick, ctx.threads);
   const Json refs = read_project_reference(ctx.project_dir, "turek_hron_fsi2.json");
   const std::vector<FsiCase> cases = fsi2_cases(ctx);
-  const double end_time = ctx.quick ? 60.0 : 200.0;
-  const double settle = ctx.quick ? 30.0 : 100.0;
+  const double end_time = ctx.quick ? 70.0 : 200.0;
+  const double settle = ctx.quick ? 40.0 : 100.0;
   const bool in_process = (ctx.jobs == 1 || cases.size() == 1) && ctx.sweep_mode == SweepMode::Run;
   const auto runs = run_cases(ctx, cases, end_time, in_process, summary);
   if (!runs) {  // commands emitted
