@@ -25,3 +25,30 @@ TEST_CASE("Sub-steps respect the criterion and add up to the interval", "[time]"
     CHECK(steps == static_cast<int>(std::ceil(interval / criterion * (1 - 1e-12))));
   }
 }
+
+TEST_CASE("Full acoustic steps pass the advection step by less than one step and land on a limit", "[time]") {
+  // The paper's Algorithm 1: steps of the criterion (at most Dt each) until their sum reaches Dt.
+  std::mt19937 gen(7);
+  std::uniform_real_distribution<double> u(0.01, 1.0);
+  for (int trial = 0; trial < 1000; ++trial) {
+    const double Dt = u(gen), criterion = u(gen) * Dt * (trial % 10 == 0 ? 3.0 : 0.7);
+    const double limit = trial % 3 == 0 ? Dt * (0.5 + u(gen)) : 1e30;  // an output time, or none
+    double elapsed = 0.0;
+    int steps = 0;
+    for (bool last = false; !last; ++steps) {
+      const SplitStep s = full_step_towards(elapsed, Dt, limit, criterion);
+      REQUIRE(s.size <= std::min(criterion, Dt) * (1 + 1e-12));  // the criterion and Dt, never passed
+      REQUIRE(s.size > 0.0);
+      elapsed += s.size;
+      last = s.last;
+    }
+    if (limit < elapsed + 1e-12 * Dt) {
+      CHECK(elapsed == Approx(limit).epsilon(1e-14));  // cut to land on the limit
+    } else {
+      const double step = std::min(criterion, Dt);
+      CHECK(elapsed >= Dt * (1 - 1e-12));                            // reaches Dt
+      CHECK(elapsed < Dt + step);                                      // by less than one step past it
+      CHECK(steps == static_cast<int>(std::ceil(Dt / step * (1 - 1e-12))));  // full steps until Dt is reached
+    }
+  }
+}

@@ -7,6 +7,7 @@
 
 #include "core/types.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace mrsph {
@@ -20,6 +21,16 @@ inline SplitStep split_remaining(Real remaining, Real criterion) {
   const Real pieces = std::ceil(remaining / criterion * (1.0 - 1e-12));
   if (!(pieces > 1.0)) return {remaining, true};
   return {remaining / pieces, false};
+}
+
+// The paper's Algorithm 1 for the acoustic steps of an advection step Dt: full steps of the
+// criterion, each at most Dt (an explicit viscous step may have set Dt below the acoustic one),
+// until their sum reaches Dt; so the last may pass Dt by less than one step, never `limit` (an
+// output time or the end: the step that reaches it is cut to land on it).
+inline SplitStep full_step_towards(Real elapsed, Real Dt, Real limit, Real criterion) {
+  const Real size = std::min(criterion, Dt);
+  if (elapsed + size >= limit * (1.0 - 1e-12)) return {limit - elapsed, true};
+  return {size, elapsed + size >= Dt * (1.0 - 1e-12)};
 }
 
 }  // namespace mrsph

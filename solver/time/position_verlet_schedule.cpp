@@ -62,12 +62,13 @@ Real PositionVerletSchedule::advance(Simulation& sim, Real max_step) {
   for (SolidBody& solid : sim.solids()) update_solid_normals(solid);
   clear_boundary_impulses(contacts);
 
-  Real elapsed = 0.0;
+  Real elapsed = 0.0, step_length = Dt;
   for (bool last = false; !last;) {
     Real criterion = acoustic_time_step(fluid);
     if (single_step_)
       for (const SolidBody& solid : sim.solids()) criterion = std::min(criterion, solid_time_step(solid));
-    const SplitStep step = split_remaining(Dt - elapsed, criterion);
+    const SplitStep step = full_acoustic_steps_ ? full_step_towards(elapsed, Dt, max_step, criterion)
+                                                : split_remaining(Dt - elapsed, criterion);
     const Real dt = step.size;
     last = step.last;
 
@@ -86,8 +87,11 @@ Real PositionVerletSchedule::advance(Simulation& sim, Real max_step) {
       run_side_by_side([&] { acoustic_second_half(fluid, inner, contacts, dt, Sharing::Balanced); },
                        [&] { sim.steps.solid += integrate_solids_over(sim, sim.time, dt); });
     for (SolidBody& solid : sim.solids()) end_kinematics_average(solid.particles, dt, sim.solid_kinematics);
+    // The equal split ends on Dt exactly; full steps where they end, or on max_step exactly.
+    const bool on_limit = full_acoustic_steps_ && dt == max_step - elapsed;
     elapsed += dt;
-    sim.time = last ? t0 + Dt : t0 + elapsed;
+    if (last) step_length = full_acoustic_steps_ ? (on_limit ? max_step : elapsed) : Dt;
+    sim.time = last ? t0 + step_length : t0 + elapsed;
     sim.impose_boundary_states(dt);
     ++sim.steps.acoustic;
   }
@@ -95,7 +99,7 @@ Real PositionVerletSchedule::advance(Simulation& sim, Real max_step) {
   sim.check_divergence();
   sim.rebuild_fluid_relations();
   ++sim.steps.advection;
-  return Dt;
+  return step_length;
 }
 
 }  // namespace mrsph

@@ -23,7 +23,9 @@ class Schedule {
   virtual Real advance(Simulation& sim, Real max_step) = 0;
 };
 
-std::unique_ptr<Schedule> make_schedule(const std::string& name);  // throws std::invalid_argument
+// full_acoustic_steps: the position-based schedules' acoustic steps as the paper's Algorithm 1
+// (position_verlet_schedule.hpp). Throws std::invalid_argument.
+std::unique_ptr<Schedule> make_schedule(const std::string& name, bool full_acoustic_steps = false);
 const std::vector<std::string>& schedule_names();
 
 }  // namespace mrsph
