@@ -27,11 +27,10 @@ TEST_CASE("The parabolic inflow's ramp rate is the derivative of its ramp", "[in
 TEST_CASE("A periodic channel started by its inflow ramp accelerates as one with the channel drive", "[inflow]") {
   // An empty channel 3 x 1, periodic along x, a 0.5-long buffer, Re = 100, c = 10 U0, the
   // profile ramped over 0.5 (a fast start: the acoustic transit of the channel is 0.3), run to the
-  // ramp's end. With the
-  // buffer alone its upstream face withdraws from the fluid at rest like a piston, a rarefaction
-  // of about rho0 c Ubar / (rho0 c^2) per unit of Ubar / c: 10 % at Ubar = U0, the more as the
-  // periodic echoes add up. With the drive the fluid accelerates with the buffer; what is left is
-  // the buffer's parabola against the drive's uniform acceleration, a viscous adjustment.
+  // ramp's end. With the buffer alone its upstream face withdraws from the fluid at rest like a
+  // piston: a rarefaction of about Ubar / c in density, 10 % at Ubar = U0, more as the periodic
+  // echoes add up. With the drive the fluid accelerates with the buffer; what is left is the
+  // buffer's parabola against the drive's uniform acceleration, a viscous adjustment.
   const bool drive = GENERATE(true, false);
   LoadedScene s = scene_from(R"json({
     "parameters": {"dp": 0.05, "H": 1.0, "L": 3.0, "wall": 0.2},
@@ -52,8 +51,9 @@ TEST_CASE("A periodic channel started by its inflow ramp accelerates as one with
   Real mean_u = 0.0;
   for (const Vec2& v : f.vel) mean_u += v.x() / static_cast<Real>(f.size());
   INFO("drive " << drive << ": largest density deviation " << r.compressibility.density_deviation.value
-                << " at t = " << r.compressibility.density_deviation.time << " (" << r.compressibility.density_deviation.position.transpose()
-                << "), Mach " << r.compressibility.mach.value << ", mean u at the ramp's end " << mean_u);
+                << " at t = " << r.compressibility.density_deviation.time << " ("
+                << r.compressibility.density_deviation.position.transpose() << "), Mach " << r.compressibility.mach.value
+                << ", mean u at the ramp's end " << mean_u);
   if (drive) {
     // Weakly compressible through the ramp (measured 0.96 %; Mach^2 = 1 % at c = 10 U0), and the
     // channel's fluid moves with the inflow (measured 0.984; the walls' boundary layers lag).

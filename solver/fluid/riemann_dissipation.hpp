@@ -40,7 +40,9 @@ struct RiemannDissipation {
     return hydrostatic_balance ? Vec2(rho0_ * body_acceleration.cwiseProduct(rest_axes_)) : Vec2::Zero();
   }
   // Which axes can hold a rest state's pressure gradient (1) and which are periodic (0).
-  void set_periodic_axes(bool periodic_x, bool periodic_y) { rest_axes_ = Vec2(periodic_x ? 0.0 : 1.0, periodic_y ? 0.0 : 1.0); }
+  void set_periodic_axes(bool periodic_x, bool periodic_y) {
+    rest_axes_ = Vec2(periodic_x ? 0.0 : 1.0, periodic_y ? 0.0 : 1.0);
+  }
   // The sign of u is a coin toss from pair to pair, so max(s, 0) is written without a branch on
   // it: (s + |s|) / 2, exact in floating point (the compiler emitted a compare and a mispredicted
   // jump for std::max here).

@@ -200,7 +200,8 @@ std::unique_ptr<Schedule> read_schedule(const SceneNode& root, Simulation& sim) 
     sim.solid_kinematics = kinematics == "instantaneous"                ? SolidKinematics::Instantaneous
                            : kinematics == "averaged_second_difference" ? SolidKinematics::AveragedSecondDifference
                                                                         : SolidKinematics::Averaged;
-    full_acoustic_steps = node->choice_or("acoustic_steps", {"equal_split", "full_steps"}, "equal_split") == "full_steps";
+    full_acoustic_steps =
+        node->choice_or("acoustic_steps", {"equal_split", "full_steps"}, "equal_split") == "full_steps";
     if (full_acoustic_steps && schedule_name == "multi_step_velocity_verlet")
       node->fail("acoustic_steps", "full_steps is an option of the position-based Verlet schedules; "
                                    "expected equal_split with multi_step_velocity_verlet");

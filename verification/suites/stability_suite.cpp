@@ -136,7 +136,8 @@ SuiteSummary run_stability_suite(const SuiteContext& ctx) {
     // The largest Mach number: a run can complete and still leave the weakly compressible regime.
     const double mach = o.compressibility.is_object() && o.compressibility.contains("max_mach")
                             ? o.compressibility["max_mach"].value("value", double(NAN)) : NAN;
-    map.add_row({double(k), double(o.completed), double(o.diverged), double(o.timed_out), t_div, o.cost.value("wall_s", double(NAN)), mach});
+    map.add_row({double(k), double(o.completed), double(o.diverged), double(o.timed_out), t_div,
+                 o.cost.value("wall_s", double(NAN)), mach});
     Json row = {{"index", k}, {"label", o.run.label}, {"config", o.run.config}, {"end_time", o.run.end_time}};
     row.update(record);
     row["wall_s"] = o.cost.value("wall_s", Json());
