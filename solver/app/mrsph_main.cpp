@@ -52,7 +52,10 @@ void print_scene(const mrsph::LoadedScene& scene) {
                                                         : fmt::format("summation each advection step, relaxed by {:g}",
                                                                       f.options.density_relaxation),
                f.options.pressure_reference == mrsph::PressureReference::Mean ? "the mean pressure" : "zero",
-               f.riemann.continuity ? "on" : "off", f.riemann.momentum ? "on" : "off",
+               !f.riemann.continuity ? "off"
+               : f.riemann.rest_pressure_gradient(sim.body_force.constant).isZero() ? "on"
+                                                                                    : "on, hydrostatically balanced",
+               f.riemann.momentum ? "on" : "off",
                f.options.delta_sph > 0.0 ? fmt::format("delta {:g}", f.options.delta_sph) : std::string("off"),
                f.options.refresh_pair_geometry ? "at each acoustic step" : "cached per advection step",
                100.0 * mrsph::smallest_support_fraction(f, sim.fluid_inner(), sim.fluid_contacts()));
