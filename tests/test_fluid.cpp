@@ -124,10 +124,12 @@ TEST_CASE("A water column holds the hydrostatic pressure on average", "[fluid]")
   int n = 0;
   for (std::size_t k = 0; k < r.series[0].time.size(); ++k)
     if (r.series[0].time[k] > 0.5) { sum += r.series[0].values[k][0]; ++n; }
-  // rho g (H - y) = 981 Pa at mid-depth. The SPH pressure gradient on a lattice at h = 1.3 dp is
-  // the lattice moment M2 = 0.974 of the true one (kernel/lattice_moments.hpp), so the pressure that
-  // balances gravity is 981 / 0.974; 3 % covers the residual breathing in a finite window.
-  CHECK(sum / n == Approx(1000 * 9.81 * 0.1 / 0.974).epsilon(0.03));
+  // rho g (H - y) = 981 Pa at mid-depth. A free surface's defaults divide the pressure force by its
+  // lattice moment M1 = 0.974 (kernel/lattice_moments.hpp; without it the column would hold itself
+  // up with 981 / 0.974) and filter the summation's noise (reports/pressure.md section 14). 1.5 %:
+  // the square lattice's M1 against a column that is partly hexagonal leaves the bulk 0.6-0.8 % low
+  // (the same tank at H/dp = 40, section 14), and the breathing is damped by t = 0.5 s.
+  CHECK(sum / n == Approx(1000 * 9.81 * 0.1).epsilon(0.015));
   double top = 0.0;
   for (const auto& p : s.simulation->fluid().particles.pos) top = std::max(top, p.y());
   CHECK(top < 0.2 + 0.01);  // no particle thrown off the free surface

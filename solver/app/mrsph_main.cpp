@@ -51,7 +51,8 @@ void print_scene(const mrsph::LoadedScene& scene) {
                : f.options.density_relaxation == 1.0 ? std::string("summation each advection step")
                                                         : fmt::format("summation each advection step, relaxed by {:g}",
                                                                       f.options.density_relaxation),
-               f.options.pressure_reference == mrsph::PressureReference::Mean ? "the mean pressure" : "zero",
+               std::string(f.options.pressure_reference == mrsph::PressureReference::Mean ? "the mean pressure" : "zero") +
+                   (f.options.pressure_lattice_correction ? ", divided by the lattice moment" : ""),
                !f.riemann.continuity ? "off"
                : f.riemann.rest_pressure_gradient(sim.body_force.constant).isZero() ? "on"
                                                                                     : "on, hydrostatically balanced",

@@ -72,6 +72,14 @@ struct FluidOptions {
   // advection step. Under a positive pressure the cached geometry feeds energy into the particle
   // motion at a rate that grows with p and with the advection step (reports/pressure.md section 9).
   bool refresh_pair_geometry = false;
+  // The three options above that the scene left to the flow (absent keys):
+  // Simulation::resolve_automatic_fluid_options gives a fluid with a free surface the relaxed
+  // summation, the corrected pressure force and the refreshed geometry, which together hold a
+  // still column's pressure to its hydrostatic answer (reports/pressure.md section 14); any other
+  // fluid keeps the values above. Options built in code leave nothing to the flow.
+  struct LeftToFlow {
+    bool density_relaxation = false, pressure_lattice_correction = false, refresh_pair_geometry = false;
+  } left_to_flow;
   Real advection_cfl = 0.25;            // paper Eq. 32
   Real acoustic_cfl = 0.6;              // paper Eq. 33
 };

@@ -69,6 +69,8 @@ void read_fluid_options(const SceneNode& node, FluidOptions& o) {
   o.viscous_lattice_correction = node.flag_or("viscous_lattice_correction", o.viscous_lattice_correction);
   o.pressure_lattice_correction = node.flag_or("pressure_lattice_correction", o.pressure_lattice_correction);
   o.refresh_pair_geometry = node.flag_or("refresh_pair_geometry", o.refresh_pair_geometry);
+  o.left_to_flow = {!node.has("density_relaxation"), !node.has("pressure_lattice_correction"),
+                    !node.has("refresh_pair_geometry")};
   o.advection_cfl = node.positive_or("advection_cfl", o.advection_cfl);
   o.acoustic_cfl = node.positive_or("acoustic_cfl", o.acoustic_cfl);
 }
