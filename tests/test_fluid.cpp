@@ -127,8 +127,8 @@ TEST_CASE("A water column holds the hydrostatic pressure on average", "[fluid]")
   // rho g (H - y) = 981 Pa at mid-depth. A free surface's defaults divide the pressure force by its
   // lattice moment M1 = 0.974 (kernel/lattice_moments.hpp; without it the column would hold itself
   // up with 981 / 0.974) and filter the summation's noise (reports/pressure.md section 14). 1.5 %:
-  // the square lattice's M1 against a column that is partly hexagonal leaves the bulk 0.6-0.8 % low
-  // (the same tank at H/dp = 40, section 14), and the breathing is damped by t = 0.5 s.
+  // the settled column's arrangement has M1 = 0.986, not the square lattice's, which leaves the bulk
+  // 0.6-0.8 % low (the same tank at H/dp = 40, section 14), and the breathing is damped by t = 0.5 s.
   CHECK(sum / n == Approx(1000 * 9.81 * 0.1).epsilon(0.015));
   double top = 0.0;
   for (const auto& p : s.simulation->fluid().particles.pos) top = std::max(top, p.y());
