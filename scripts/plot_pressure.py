@@ -69,8 +69,10 @@ if os.path.exists(profile_path):
         res, c, fresh, theta, lattice = key
         sel = [k for k in range(rows) if case[k] == key]
         depth = [p["depth_over_H"][k] for k in sel]
-        label = (f"H/dp = {res:g}, c = {c:g} sqrt(2gH)" + (", refreshed" if fresh else "")
-                 + (f", theta {theta:g}" if theta != 1.0 else "") + (", M1-corrected" if lattice else ""))
+        paper = not fresh and theta == 1.0 and not lattice
+        label = (f"H/dp = {res:g}, c = {c:g} sqrt(2gH)" + (", the paper's options" if paper else "")
+                 + (", refreshed" if fresh else "") + (f", theta {theta:g}" if theta != 1.0 else "")
+                 + (", M1-corrected" if lattice else ""))
         ax.plot([p["pressure_over_rho_g_H"][k] for k in sel], depth, "o-", ms=3, label=label)
         ax_err.plot([p["pressure_over_rho_g_H"][k] - p["hydrostatic_over_rho_g_H"][k] for k in sel], depth, "o-", ms=3)
     ax.plot([0, 1], [0, 1], "k--", lw=0.8, label="rho g (H - y)")
