@@ -134,7 +134,8 @@ constexpr std::size_t kSortInterval = 100;  // advection steps between reorderin
 // own, and whose summation density is reset each advection step from an arrangement that a free
 // surface cuts. Measured on the still tank, H/dp = 40 (reports/pressure.md sections 9-14): the
 // paper's options leave the pressure 24 % of rho g H noisy and 2.8 % high at the floor; these take
-// it to 1.2 % and 0.8 %, and the gate against its experiment stays within 0.1 mm.
+// it to 1.2 % and 0.8 %. The gate against its experiment moves by under 0.1 mm at resolution ratios
+// 1-2; at 4-8 the relaxed summation moves its loading phase by up to 1.6 mm (reports/antoci.md).
 //   - the summation's reset relaxed to 5 % per advection step: its arrangement noise (section 11);
 //   - the pressure force divided by its lattice moment M1: the column held up by its gradient (6);
 //   - the pressure pass's geometry at each acoustic step: a cached one feeds energy into the
