@@ -25,6 +25,12 @@ Vec2 total_force_on_boundary(const FluidContact& contact) {
   return total;
 }
 
+Vec2 viscous_force_on_boundary(const FluidContact& contact) {
+  Vec2 total = Vec2::Zero();
+  for (const Vec2& f : contact.pair_viscous_force) total -= f;
+  return total;
+}
+
 void clear_boundary_impulses(std::vector<FluidContact>& contacts) {
   for (FluidContact& c : contacts) {
     c.step_impulse = Vec2::Zero();

@@ -29,6 +29,9 @@ void set_force_from_fluid(const FluidContact& contact, SolidParticles& solid);
 // Total force of the fluid on a boundary body in the current acoustic step.
 Vec2 total_force_on_boundary(const FluidContact& contact);
 
+// The viscous part of it: the pairs' viscous forces, computed once per advection step.
+Vec2 viscous_force_on_boundary(const FluidContact& contact);
+
 // The impulse record of the contacts that keep one (FluidContact::records_impulse): cleared at the
 // start of an advection step; a kick of the fluid by dt adds dt times the boundary's share of it.
 void clear_boundary_impulses(std::vector<FluidContact>& contacts);

@@ -98,7 +98,7 @@ std::vector<std::string> PointObserver::columns() const {
     case ObservedQuantity::Displacement: return {"dx", "dy"};
     case ObservedQuantity::Velocity: return {"u", "v"};
     case ObservedQuantity::Pressure: return {"p"};
-    case ObservedQuantity::Force: return {"fx", "fy"};
+    case ObservedQuantity::Force: return {"fx", "fy", "fx_viscous", "fy_viscous"};
     case ObservedQuantity::Front: return {"front"};
     case ObservedQuantity::Gap: return {"gap"};
   }
@@ -107,9 +107,12 @@ std::vector<std::string> PointObserver::columns() const {
 
 std::vector<Real> PointObserver::sample(const Simulation& sim) const {
   if (target_ == Target::Boundaries) {
-    Vec2 total = Vec2::Zero();
-    for (std::size_t k : contact_indices_) total += mean_force_on_boundary(sim.fluid_contacts()[k]);
-    return {total.x(), total.y()};
+    Vec2 total = Vec2::Zero(), viscous = Vec2::Zero();
+    for (std::size_t k : contact_indices_) {
+      total += mean_force_on_boundary(sim.fluid_contacts()[k]);
+      viscous += viscous_force_on_boundary(sim.fluid_contacts()[k]);
+    }
+    return {total.x(), total.y(), viscous.x(), viscous.y()};
   }
   if (target_ == Target::SolidPair) {
     const Vec2Array& a = sim.solids()[solid_index_].particles.pos;
