@@ -7,6 +7,7 @@
 #include "run/run_summary.hpp"
 #include "run/runner.hpp"
 #include "solid/solid_dynamics.hpp"
+#include "solid/step_criterion.hpp"
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -82,6 +83,9 @@ void print_scene(const mrsph::LoadedScene& scene) {
                s.weights.time_step_scale);
     if (s.weights.highest_frequency > 0.0)
       fmt::print("; omega_max dt = {:.3f} (position Verlet is stable below 2)", s.weights.highest_frequency * step);
+    if (s.weights.highest_damping_rate > 0.0)
+      fmt::print("; damping's rate dt = {:.3f} (at most {:g})", s.weights.highest_damping_rate * step,
+                 mrsph::kDampingStepLimit);
     fmt::print("\n");
   }
   fmt::print("schedule   {}   end time {:g}\n", scene.schedule->name(), scene.run.end_time);

@@ -57,6 +57,11 @@ struct GradientWeights {
   // omega_max of the weights in use (0 where not computed: the paper's weights). Reported by
   // `mrsph check` with omega_max dt_S: position Verlet is stable for omega_max dt_S < 2.
   Real highest_frequency = 0.0;
+  // The Kelvin-Voigt damping's largest decay rate (1/s; 0 without damping): the linearised operator
+  // v -> f(v)/m of the viscous stress eta sym(grad v), plane-strain elasticity with Lame constants 0
+  // and eta / 2 acting on velocities. Set by initialise_solid; the step keeps rate dt below
+  // kDampingStepLimit (step_criterion.hpp).
+  Real highest_damping_rate = 0.0;
 };
 
 // sum_b (u_b - u_a) (x) w_ab over a's pairs (neighbor: the pairs' b, GradientWeights::neighbor): the

@@ -31,6 +31,11 @@ Mat2 deformation_rate(const SolidBody& solid, std::size_t a) {
 // and an impact needs that margin. Two blocks meeting at relative Mach 0.2 (tests/test_solid_contact.cpp)
 // kept their energy to 0.12 % with it, lost 3.9 % without it, 2.4 % with the paper's B0 at its step
 // (reports/performance.md section 12).
+// The Kelvin-Voigt viscosity eta = coefficient rho0 c_S h (SolidOptions::damping_coefficient).
+Real damping_viscosity(const SolidBody& solid) {
+  return solid.options.damping_coefficient * solid.material.density() * solid.material.sound_speed() * solid.h();
+}
+
 GradientCorrection correction_in_use(const SolidBody& solid) {
   if (solid.in_contact && solid.options.gradient_correction == GradientCorrection::SecondOrder)
     return GradientCorrection::SecondOrderWithCorners;
@@ -51,6 +56,10 @@ void initialise_solid(SolidBody& solid) {
   if (correction != GradientCorrection::FirstOrder)
     calibrate_time_step(solid.weights, solid.inner, s.vol0, s.mass, s.constrained, solid.h(), solid.material.lambda(),
                         solid.material.shear_modulus());
+  if (const Real eta = damping_viscosity(solid); eta > 0.0)
+    solid.weights.highest_damping_rate = highest_frequency_squared(solid.inner, solid.weights.w, solid.weights.w_reverse,
+                                                                   solid.weights.w_sum, s.vol0, s.mass, s.constrained,
+                                                                   0.0, 0.5 * eta);
   parallel_for_each(s.size(), [&](std::size_t a) {
     s.B[a] = solid.weights.B[a];
     s.F[a] = Mat2::Identity();
@@ -89,9 +98,6 @@ Mat2 total_stress(const SolidBody& solid, const Mat2& F, const Mat2& dF_dt, Real
     P += F * (eta * 0.5 * (rate + rate.transpose()));
   }
   return P;
-}
-Real damping_viscosity(const SolidBody& solid) {
-  return solid.options.damping_coefficient * solid.material.density() * solid.material.sound_speed() * solid.h();
 }
 }  // namespace
 
