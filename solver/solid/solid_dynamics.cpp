@@ -26,16 +26,16 @@ Mat2 deformation_rate(const SolidBody& solid, std::size_t a) {
   return weighted_gradient(solid.inner, g.neighbor, g.w, s.vel, a);
 }
 
-// The weights a body gets. A body in contact keeps the quadratic fits at its corners, and with them
-// the step they set: its bulk modes then run at omega dt = 1.15 instead of 1.35 (gradient_weights.hpp),
-// and an impact needs that margin. Two blocks meeting at relative Mach 0.2 (tests/test_solid_contact.cpp)
-// kept their energy to 0.12 % with it, lost 3.9 % without it, 2.4 % with the paper's B0 at its step
-// (reports/performance.md section 12).
 // The Kelvin-Voigt viscosity eta = coefficient rho0 c_S h (SolidOptions::damping_coefficient).
 Real damping_viscosity(const SolidBody& solid) {
   return solid.options.damping_coefficient * solid.material.density() * solid.material.sound_speed() * solid.h();
 }
 
+// The weights a body gets. A body in contact keeps the quadratic fits at its corners, and with them
+// the step they set: its bulk modes then run at omega dt = 1.15 instead of 1.35 (gradient_weights.hpp),
+// and an impact needs that margin. Two blocks meeting at relative Mach 0.2 (tests/test_solid_contact.cpp)
+// kept their energy to 0.12 % with it, lost 3.9 % without it, 2.4 % with the paper's B0 at its step
+// (reports/performance.md section 12).
 GradientCorrection correction_in_use(const SolidBody& solid) {
   if (solid.in_contact && solid.options.gradient_correction == GradientCorrection::SecondOrder)
     return GradientCorrection::SecondOrderWithCorners;
