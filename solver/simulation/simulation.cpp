@@ -135,7 +135,8 @@ constexpr std::size_t kSortInterval = 100;  // advection steps between reorderin
 // surface cuts. Measured on the still tank, H/dp = 40 (reports/pressure.md sections 9-14): the
 // paper's options leave the pressure 24 % of rho g H noisy and 2.8 % high at the floor; these take
 // it to 1.2 % and 0.8 %. The gate against its experiment moves by under 0.1 mm at resolution ratios
-// 1-2; at 4-8 the relaxed summation moves its loading phase by up to 1.6 mm (reports/antoci.md).
+// 1-2; at 4-8 the relaxed summation kept the trace of the coupling's bursts in the density, moving
+// the loading phase by up to 1.6 mm, until the gate's damping went to 0.1 (reports/antoci.md).
 //   - the summation's reset relaxed to 5 % per advection step: its arrangement noise (section 11);
 //   - the pressure force divided by its lattice moment M1: the column held up by its gradient (6);
 //   - the pressure pass's geometry at each acoustic step: a cached one feeds energy into the
