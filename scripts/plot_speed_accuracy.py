@@ -1,12 +1,17 @@
 """Figure of the speed-accuracy suite: wall time against error, one panel per benchmark, the Pareto
 front drawn."""
+import sys
+
 from plot_common import load_summary, plt, save, suite_dir
 
 directory = suite_dir()
 summary = load_summary(directory)
 units = {"plate": "|period / Euler-Bernoulli - 1|", "gate": "RMS error of x vs experiment [mm]",
          "FSI2": "max relative error of A_y, St vs Turek-Hron"}
-benchmarks = [b for b in ("plate", "gate", "FSI2") if any(p["benchmark"] == b and p["error"] is not None for p in summary["points"])]
+benchmarks = [b for b in ("plate", "gate", "FSI2")
+              if any(p["benchmark"] == b and p["error"] is not None and p["wall_s"] is not None for p in summary["points"])]
+if not benchmarks:  # e.g. --merge before any run is done
+    sys.exit("no configuration has an error and a wall time (no run completed): no figure")
 fig, axes = plt.subplots(1, len(benchmarks), figsize=(5.5 * len(benchmarks), 4.5), squeeze=False)
 for ax, name in zip(axes[0], benchmarks):
     pts = [p for p in summary["points"] if p["benchmark"] == name and p["error"] is not None and p["wall_s"] is not None]
