@@ -4,6 +4,8 @@
 // the force observer on cylinder + beam, each sample the force averaged over one advection step;
 // metrics over a window after the flow has settled, each sample weighted by its step's duration:
 //   drag_mean, lift_mean, drag_std, lift_std       (CFD1, CFD2: steady; the std is what is left unsteady)
+//   drag_viscous_mean                               (the viscous pair forces' share of drag_mean; the rest
+//                                                    is the pressure's: reports/pressure.md sections 15-16)
 //   drag_drift, lift_drift                          (CFD1, CFD2: the mean over the window's second half
 //                                                    minus that over its first: how far the mean itself
 //                                                    is from settled; reports/pressure.md section 10)
@@ -19,6 +21,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -79,6 +82,9 @@ void run_cylinder(const SuiteContext& ctx, CylinderRun& out) {
   const ObserverSeries& forces = series_named(run.result.series, "forces");
   const WindowStats drag = window_stats(forces, 0, b.window_start), lift = window_stats(forces, 1, b.window_start);
   r.metrics = {{"drag_mean", drag.mean}, {"drag_std", drag.std}, {"lift_mean", lift.mean}, {"lift_std", lift.std}};
+  const auto viscous = std::find(forces.columns.begin(), forces.columns.end(), "fx_viscous");
+  if (viscous != forces.columns.end())
+    r.metrics["drag_viscous_mean"] = window_stats(forces, static_cast<std::size_t>(viscous - forces.columns.begin()), b.window_start).mean;
   if (!b.shedding) {
     // A steady case's mean still carries the channel's slowly decaying acoustic mode (period about
     // 2 L / c) and any drift: the difference of the two halves' means says how settled it is.
