@@ -15,7 +15,6 @@ data = read_csv(os.path.join(directory, "diagnosis", "cfd_drag_by_angle.csv"))
 rows = range(len(data["Re"]))
 
 
-
 def cumulative(values):
     out, total = [], 0.0
     for v in values:
