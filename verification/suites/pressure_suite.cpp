@@ -242,6 +242,7 @@ SuiteSummary run_pressure_suite(const SuiteContext& ctx) {
   SuiteSummary summary("pressure", ctx.quick, ctx.threads);
   run_taylor_green(ctx, summary);
   run_hydrostatic_tank(ctx, summary);
+  run_submerged_cylinder(ctx, summary);
   run_cylinder_benchmarks(ctx, summary);
   summary.write(ctx.out_dir);
   render_figures(ctx, "plot_pressure.py", summary);

@@ -3,6 +3,7 @@
 //   Turek & Hron CFD1-CFD3 (Re = 20, 100 steady; 200 periodic): drag, lift, Strouhal number on a
 //     resolution ladder and at three sound speeds (the incompressible limit must not depend on c)
 //   still water tank: pressure against rho g (H - y) after settling, and its noise
+//   a cylinder under the surface of still water: its buoyancy against Archimedes, at three sound speeds
 //   Taylor-Green vortex: velocity decay and the pressure field against the analytic solution
 #pragma once
 
@@ -39,6 +40,7 @@ void run_cylinder(const SuiteContext& ctx, CylinderRun& out);
 // the tank and the vortex).
 void run_cylinder_benchmarks(const SuiteContext& ctx, SuiteSummary& summary);
 void run_hydrostatic_tank(const SuiteContext& ctx, SuiteSummary& summary);
+void run_submerged_cylinder(const SuiteContext& ctx, SuiteSummary& summary);  // pressure_buoyancy.cpp
 void run_taylor_green(const SuiteContext& ctx, SuiteSummary& summary);
 
 // Shared by the parts: a run's metric (NaN if the run diverged or did not measure it), and checks
