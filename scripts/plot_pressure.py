@@ -1,6 +1,6 @@
 """Figures of the pressure suite: drag and lift of the cylinder benchmarks against Turek & Hron over
-resolution and sound speed, the CFD3 lift history, the still tank's pressure profile, and the
-Taylor-Green vortex's errors over time."""
+resolution and sound speed, the CFD3 lift history, the still tank's pressure profile, the submerged
+cylinder's buoyancy over time, and the Taylor-Green vortex's errors over time."""
 import math
 import os
 
@@ -85,6 +85,25 @@ if os.path.exists(profile_path):
     ax_err.invert_yaxis()
     ax_err.legend(fontsize=7)
     save(fig, directory, "pressure_tank_profile.png")
+
+submerged = [r for r in summary["runs"] if "archimedes_force" in r["config"]]
+if submerged:
+    fig, ax = plt.subplots(figsize=(9, 3.8))
+    for r in submerged:
+        cfg = r["config"]
+        path = os.path.join(directory, f"buoyancy_res{cfg['resolution']}_c{cfg['sound_speed_factor']}", "cylinder_force.csv")
+        if not os.path.exists(path):
+            continue
+        d = read_csv(path)
+        ax.plot(d["time"], [f / cfg["archimedes_force"] for f in d["fy"]], lw=0.7,
+                label=f"H/dp = {cfg['resolution']}, c = {cfg['sound_speed_factor']} sqrt(2gH): mean {value(r, 'buoyancy_ratio'):.4f}")
+    ax.axhline(1.0, color="k", lw=0.8, ls="--", label="Archimedes, rho g pi R^2")
+    ax.axvline(submerged[0]["config"]["settle_time"], color="0.6", lw=0.8, ls=":", label="means from here")
+    ax.set_ylim(0.8, 1.2)
+    ax.set_xlabel("t (s)")
+    ax.set_ylabel("upward force on the cylinder / rho g pi R^2")
+    ax.legend(fontsize=7)
+    save(fig, directory, "pressure_buoyancy.png")
 
 decay_path = os.path.join(directory, "taylor_green_decay.csv")
 if os.path.exists(decay_path):

@@ -46,8 +46,9 @@ SuiteRun run_buoyancy(const SuiteContext& ctx, const BuoyancyCase& c, double set
 
   SuiteRun r;
   r.case_name = case_name(c);
+  const double archimedes = rho_g * M_PI * R * R;
   r.config = {{"resolution", c.resolution}, {"sound_speed_factor", c.factor}, {"settle_time", settle},
-              {"end_time", end_time}, {"scene", "submerged_cylinder.json"}};
+              {"end_time", end_time}, {"archimedes_force", archimedes}, {"scene", "submerged_cylinder.json"}};
   r.cost = cost_json(run);
   r.compressibility = compressibility_record(run);
   r.diverged = run.result.divergence.has_value();
@@ -63,7 +64,7 @@ SuiteRun run_buoyancy(const SuiteContext& ctx, const BuoyancyCase& c, double set
     sum2 += force.values[k][fy] * force.values[k][fy];
     ++n;
   }
-  const double archimedes = rho_g * M_PI * R * R, mean = n > 0 ? sum / n : NAN;
+  const double mean = n > 0 ? sum / n : NAN;
   r.metrics = {{"buoyancy_ratio", mean / archimedes},
                {"buoyancy_error", (mean - archimedes) / (rho_g * H * 2.0 * R)},
                {"buoyancy_std", n > 0 ? std::sqrt(std::max(0.0, sum2 / n - mean * mean)) / archimedes : NAN}};
