@@ -55,19 +55,11 @@ SuiteRun run_buoyancy(const SuiteContext& ctx, const BuoyancyCase& c, double set
   r.divergence = divergence_record(run);
   if (r.diverged) return r;
   const ObserverSeries& force = series_named(run.result.series, "cylinder_force");
-  const std::size_t fy = static_cast<std::size_t>(std::find(force.columns.begin(), force.columns.end(), "fy") - force.columns.begin());
-  double sum = 0.0, sum2 = 0.0;
-  int n = 0;
-  for (std::size_t k = 0; k < force.time.size(); ++k) {
-    if (force.time[k] < settle) continue;
-    sum += force.values[k][fy];
-    sum2 += force.values[k][fy] * force.values[k][fy];
-    ++n;
-  }
-  const double mean = n > 0 ? sum / n : NAN;
-  r.metrics = {{"buoyancy_ratio", mean / archimedes},
-               {"buoyancy_error", (mean - archimedes) / (rho_g * H * 2.0 * R)},
-               {"buoyancy_std", n > 0 ? std::sqrt(std::max(0.0, sum2 / n - mean * mean)) / archimedes : NAN}};
+  const auto fy = std::find(force.columns.begin(), force.columns.end(), "fy");
+  const WindowStats up = window_stats(force, static_cast<std::size_t>(fy - force.columns.begin()), settle);
+  r.metrics = {{"buoyancy_ratio", up.mean / archimedes},
+               {"buoyancy_error", (up.mean - archimedes) / (rho_g * H * 2.0 * R)},
+               {"buoyancy_std", up.std / archimedes}};
   return r;
 }
 

@@ -100,19 +100,9 @@ SuiteRun run_tank(const SuiteContext& ctx, const TankCase& c, double settle, dou
                      used.density_relaxation, used.pressure_lattice_correction ? 1.0 : 0.0, depth / H,
                      (rho_g * depth + mean) / scale, rho_g * depth / scale});
   }
-  const ObserverSeries& bottom = series_named(run.result.series, "bottom");
-  double sum = 0.0, sum2 = 0.0;
-  int n = 0;
-  for (std::size_t k = 0; k < bottom.time.size(); ++k) {
-    if (bottom.time[k] < settle) continue;
-    sum += bottom.values[k][0];
-    sum2 += bottom.values[k][0] * bottom.values[k][0];
-    ++n;
-  }
-  const double bottom_mean = n > 0 ? sum / n : NAN;
+  const WindowStats bottom = window_stats(series_named(run.result.series, "bottom"), 0, settle);
   r.metrics = {{"profile_error", worst}, {"pressure_noise", samples > 0 ? std::sqrt(noise2 / samples) / scale : NAN},
-               {"bottom_mean", bottom_mean / scale},
-               {"bottom_std", n > 0 ? std::sqrt(std::max(0.0, sum2 / n - bottom_mean * bottom_mean)) / scale : NAN}};
+               {"bottom_mean", bottom.mean / scale}, {"bottom_std", bottom.std / scale}};
   return r;
 }
 

@@ -27,17 +27,7 @@
 
 namespace mrsph::verification {
 
-namespace {
-
-struct WindowStats {
-  double mean = NAN, std = NAN;
-};
-
-// Mean and standard deviation of one column over (start, end], each sample weighted by the time since
-// the previous one (the observer samples every advection step; a step cut short to land on the end
-// time weighs little).
-WindowStats window_stats(const ObserverSeries& s, std::size_t column, double start,
-                         double end = std::numeric_limits<double>::infinity()) {
+WindowStats window_stats(const ObserverSeries& s, std::size_t column, double start, double end) {
   double weight = 0.0, sum = 0.0, sum2 = 0.0;
   for (std::size_t k = 1; k < s.time.size(); ++k) {
     if (s.time[k] <= start || s.time[k] > end) continue;
@@ -50,8 +40,6 @@ WindowStats window_stats(const ObserverSeries& s, std::size_t column, double sta
   const double mean = sum / weight;
   return {mean, std::sqrt(std::max(0.0, sum2 / weight - mean * mean))};
 }
-
-}  // namespace
 
 void run_cylinder(const SuiteContext& ctx, CylinderRun& out) {
   const BenchmarkCase& b = *out.benchmark;

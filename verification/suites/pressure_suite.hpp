@@ -7,7 +7,11 @@
 //   Taylor-Green vortex: velocity decay and the pressure field against the analytic solution
 #pragma once
 
+#include "run/runner.hpp"
 #include "suites/suite.hpp"
+
+#include <cmath>
+#include <limits>
 
 #include <string>
 
@@ -43,8 +47,16 @@ void run_hydrostatic_tank(const SuiteContext& ctx, SuiteSummary& summary);
 void run_submerged_cylinder(const SuiteContext& ctx, SuiteSummary& summary);  // pressure_buoyancy.cpp
 void run_taylor_green(const SuiteContext& ctx, SuiteSummary& summary);
 
-// Shared by the parts: a run's metric (NaN if the run diverged or did not measure it), and checks
-// that record a missing value as a failed check.
+// Shared by the parts: the mean and standard deviation of one column of an observer's series over
+// (start, end], each sample weighted by the time since the previous one (the observer samples every
+// advection step; a step cut short to land on the end time weighs little);
+struct WindowStats {
+  double mean = NAN, std = NAN;
+};
+WindowStats window_stats(const ObserverSeries& s, std::size_t column, double start,
+                         double end = std::numeric_limits<double>::infinity());
+// a run's metric (NaN if the run diverged or did not measure it), and checks that record a missing
+// value as a failed check.
 double run_metric(const SuiteRun& run, const std::string& name);
 void check_at_most_or_missing(SuiteSummary& summary, const std::string& name, double value, double limit,
                               const std::string& source);
