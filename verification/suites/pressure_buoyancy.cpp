@@ -13,7 +13,6 @@
 
 #include <fmt/format.h>
 
-#include <algorithm>
 #include <cmath>
 
 namespace mrsph::verification {
@@ -54,9 +53,8 @@ SuiteRun run_buoyancy(const SuiteContext& ctx, const BuoyancyCase& c, double set
   r.diverged = run.result.divergence.has_value();
   r.divergence = divergence_record(run);
   if (r.diverged) return r;
-  const ObserverSeries& force = series_named(run.result.series, "cylinder_force");
-  const auto fy = std::find(force.columns.begin(), force.columns.end(), "fy");
-  const WindowStats up = window_stats(force, static_cast<std::size_t>(fy - force.columns.begin()), settle);
+  // The force observer's columns are fx, fy, fx_viscous, fy_viscous (as run_cylinder reads them).
+  const WindowStats up = window_stats(series_named(run.result.series, "cylinder_force"), 1, settle);
   r.metrics = {{"buoyancy_ratio", up.mean / archimedes},
                {"buoyancy_error", (up.mean - archimedes) / (rho_g * H * 2.0 * R)},
                {"buoyancy_std", up.std / archimedes}};
