@@ -2,6 +2,7 @@
 #include "fluid/acoustic_step.hpp"
 #include "fluid/density_summation.hpp"
 #include "fluid/viscous_force.hpp"
+#include "fluid/wall_rules.hpp"
 #include "fsi/fluid_solid_coupling.hpp"
 #include "scene_fixture.hpp"
 #include "run/runner.hpp"
@@ -413,13 +414,18 @@ TEST_CASE("The Riemann continuity term keeps a column at its hydrostatic state w
   // at the free surface the support is cut, and the term raises the density there by about
   // rho g / c (reports/pressure.md section 12). With the hydrostatic balance it acts on
   // p - rho0 g . r, which is constant in this state.
-  const std::string balance = GENERATE("false", "true");
+  // The paper's term; the balance with the paper's wall clip (the default); the balance continued
+  // into the walls (FluidOptions::rest_state_at_walls, wall_rules.hpp).
+  const std::string balance = GENERATE("false", "true", "true, walls");
+  const bool walls = balance == "true, walls";
   LoadedScene s = scene_from(R"json({
     "parameters": {"dp": 0.01, "H": 0.2, "g": 9.81},
     "domain": {"lower": [-0.05, -0.05], "upper": [0.35, 0.35]},
     "fluid": {"dp": "dp", "region": {"rectangle": {"lower": [0, 0], "upper": [0.3, "H"]}}, "density": 1000,
               "sound_speed": "10 * sqrt(2 * g * H)", "density_reinitialisation": "free_surface",
-              "riemann": {"continuity": true, "momentum": true, "hydrostatic_balance": )json" + balance + R"json(}},
+              "riemann": {"continuity": true, "momentum": true, "hydrostatic_balance": )json" + std::string(
+                             balance == "false" ? "false" : "true") + R"json(},
+              "rest_state_at_walls": )json" + (walls ? "true" : "false") + R"json(},
     "walls": [{"name": "tank", "dp": "dp", "region": {"difference": {
                 "base": {"rectangle": {"lower": ["-4*dp", "-4*dp"], "upper": ["0.3+4*dp", 0.3]}},
                 "subtract": [{"rectangle": {"lower": [0, 0], "upper": [0.3, 0.4]}}]}}}],
@@ -449,20 +455,55 @@ TEST_CASE("The Riemann continuity term keeps a column at its hydrostatic state w
   }
   INFO("hydrostatic_balance " << balance << ": |drho/dt| / (rho g / c 2 / pi), surface " << surface << ", floor "
                               << floor << ", side walls " << side << ", bulk " << bulk);
-  if (balance == "true") {
-    // p - rho0 g . r is the same at every particle: zero pair by pair. At a wall pair the dummy's
-    // pressure is extrapolated with rho_i instead of rho0: (rho_i - rho0) g (y_i - y_a), of order
-    // rho g H / (rho0 c^2) = 0.5 % of the cut rate.
+  if (walls) {
+    // p - rho0 g . r is the same at every particle: zero pair by pair. The wall rule continues the
+    // same rest state into the dummies (wall_rules.hpp): zero at the floor and the side walls too.
     CHECK(bulk < 1e-9);
     CHECK(surface < 1e-9);
+    CHECK(floor < 1e-9);
+    CHECK(side < 1e-9);
+  } else if (balance == "true") {
+    CHECK(bulk < 1e-9);
+    CHECK(surface < 1e-9);
+    // At a wall pair the dummy's pressure is extrapolated with rho_i instead of rho0:
+    // (rho_i - rho0) g (y_i - y_a), of order rho g H / (rho0 c^2) = 0.5 % of the cut rate.
     CHECK(floor < 0.01);
+    // Beside a side wall the paper's clip max(0, .) of the whole acceleration gives the dummies above
+    // particle i its own pressure instead of the extrapolated one: 0.24 of the cut rate.
+    CHECK(side > 0.1);
+    CHECK(side < 0.3);
   } else {
     CHECK(surface > 0.5);  // the paper's term on a cut support: 0.9 of the half disc's estimate
     CHECK(bulk < 0.005);   // a full support cancels a linear p, to the volumes' 0.5 % variation
-    CHECK(floor < 0.01);   // the floor's dummies complete the support with the extrapolated pressure
+    CHECK(floor < 0.01);  // the floor's dummies complete the support with the extrapolated pressure
+    CHECK(side > 0.1);    // the paper's clip beside a side wall, as above
+    CHECK(side < 0.3);
   }
-  // Beside a side wall the wall pressure's clamp max(0, .) gives the dummies above particle i its
-  // own pressure instead of the extrapolated one, with either form: 0.24 of the cut rate. The
-  // continuity term keeps the clamp, so that every operator sees one wall pressure (wall_rules.hpp).
-  CHECK(side < 0.3);
+}
+
+TEST_CASE("The wall rule continues the rest state's pressure into a dummy particle, and not below the atmosphere", "[fluid]") {
+  // wall_rules.hpp: p^d = p_i + rho_i max(0, (a_i - b - abar) . r_ai) + max(G . r_ai, min(-p_i, 0)).
+  const Real rho0 = 1000.0, g = 9.81, dy = 0.01, rho_i = 1001.0;
+  const Vec2 G(0.0, -rho0 * g), above(0.0, dy), below(0.0, -dy), beside_above(dy, 0.5 * dy);
+  const Vec2 at_rest = Vec2::Zero(), still_wall = Vec2::Zero();
+  const Real p = 10.0 * rho0 * g * dy;  // ten spacings under the surface
+  // A column at rest: the hydrostatic continuation, up and down (the paper's clip kept p_i above).
+  CHECK(wall_pressure(p, rho_i, at_rest, still_wall, above, G) == Approx(p - rho0 * g * dy).epsilon(1e-14));
+  CHECK(wall_pressure(p, rho_i, at_rest, still_wall, below, G) == Approx(p + rho0 * g * dy).epsilon(1e-14));
+  CHECK(wall_pressure(p, rho_i, at_rest, still_wall, beside_above, G) == Approx(p - 0.5 * rho0 * g * dy).epsilon(1e-14));
+  // Half a spacing under the surface, the continuation one spacing up stops at the atmosphere's 0.
+  const Real shallow = 0.5 * rho0 * g * dy;
+  CHECK(wall_pressure(shallow, rho_i, at_rest, still_wall, above, G) == 0.0);
+  // A particle already below 0 keeps its own pressure above it (the paper's clip).
+  CHECK(wall_pressure(-5.0, rho_i, at_rest, still_wall, above, G) == -5.0);
+  // The acceleration beyond the rest state stays clipped: a fluid accelerating away from the wall
+  // (or a wall accelerating away) leaves the dummy at the continuation, one accelerating towards it adds.
+  const Vec2 up(0.0, 3.0);
+  CHECK(wall_pressure(p, rho_i, up, still_wall, below, G) == Approx(p + rho0 * g * dy).epsilon(1e-14));
+  CHECK(wall_pressure(p, rho_i, Vec2(-up), still_wall, below, G) == Approx(p + rho0 * g * dy + rho_i * 3.0 * dy).epsilon(1e-14));
+  // Without a rest state (G = 0: no body force along an axis that is not periodic, or no balance)
+  // the rule is the paper's, to the bit.
+  const Vec2 none = Vec2::Zero(), a(0.3, -2.0), abar(0.1, 0.4);
+  for (const Vec2& r : {above, below, beside_above})
+    CHECK(wall_pressure(p, rho_i, a, abar, r, none) == p + rho_i * std::max(Real(0), (a - abar).dot(r)));
 }

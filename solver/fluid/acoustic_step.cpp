@@ -69,7 +69,7 @@ struct PressureInteraction {
     Real p, rho;
     Real p_relative;      // p_i - 2 p_ref: the pair forces use p_i + p_j - 2 p_ref
     Real vol_scaled;      // V_i, divided by M1 with the pressure lattice correction
-    Vec2 acc_prior;       // F^prior_i / m_i + g: the wall pressure's acceleration
+    Vec2 acc_beyond_rest;  // F^prior_i / m_i + g - g_rest: the wall pressure's clipped acceleration
     Vec2 moved;           // r_i - r_i at the list build (kRefresh)
     Vec2 force = Vec2::Zero();
     Real drho = 0.0, diffusion = 0.0;
@@ -92,10 +92,16 @@ struct PressureInteraction {
   Real diffusion_scale = delta * fluid.h() * fluid.material.sound_speed();
   Vec2 rest_gradient = fluid.riemann.rest_pressure_gradient(body_acceleration);
   bool at_rest_state = rest_gradient != Vec2::Zero();  // the continuity term on the departure from it
+  // The rest state the wall rule continues whole (FluidOptions::rest_state_at_walls; wall_rules.hpp),
+  // else none: the paper's clip of the whole acceleration.
+  bool walls_at_rest_state = fluid.options.rest_state_at_walls;
+  Vec2 wall_rest_gradient = walls_at_rest_state ? rest_gradient : Vec2::Zero();
+  Vec2 acceleration_beyond_rest =
+      body_acceleration - (walls_at_rest_state ? fluid.riemann.rest_acceleration(body_acceleration) : Vec2::Zero());
 
   Sum begin(std::size_t i) const {
     return {f.p[i], f.rho[i], f.p[i] - 2.0 * fluid.reference_pressure, scale * f.vol[i],
-            f.force_prior[i] / f.mass[i] + body_acceleration,
+            f.force_prior[i] / f.mass[i] + acceleration_beyond_rest,
             kRefresh ? fluid.moved_since_list_build[i] : Vec2::Zero()};
   }
 
@@ -134,7 +140,7 @@ struct PressureInteraction {
   template <class Geometry>
   void contact_pair_force(Sum& s, const Side& b, Index k, const Geometry& g) const {
     const Index a = g.j();
-    const Real p_d = wall_pressure(s.p, s.rho, s.acc_prior, b.abar[a], -g.r_ij());
+    const Real p_d = wall_pressure(s.p, s.rho, s.acc_beyond_rest, b.abar[a], -g.r_ij(), wall_rest_gradient);
     const Vec2 pair = -(s.vol_scaled * b.vol[a] * (s.p_relative + p_d) * g.gradient_scale()) * g.gradient_vector();
     b.pair_force[k] = pair;
     s.force += pair;

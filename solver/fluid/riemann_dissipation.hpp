@@ -6,7 +6,9 @@
 // (`hydrostatic_balance`, the default). On a cut support, at a free surface, the paper's term is
 // not zero for a column at rest. It raises the density there by about rho g / c (reports/pressure.md
 // section 12). Only b's components along axes that are not periodic count: along a periodic axis
-// the pressure has no mean gradient, and a force there drives a flow instead (a channel).
+// the pressure has no mean gradient, and a force there drives a flow instead (a channel). With the
+// fluid's rest_state_at_walls the wall rule's pressure continues the same rest state into the dummy
+// particles (wall_rules.hpp), so a column at rest is balanced across walls too.
 //   momentum:    Pi(u) = Z u beta,  beta = min(eta max(-u, 0) / c, 1), eta = 3
 // The paper damps approaching (compressing, u < 0) pairs; the code since 2022 damps separating
 // pairs (u > 0). Approaching is the default; `damp_separating` keeps the other for comparison.
@@ -35,9 +37,13 @@ struct RiemannDissipation {
   Real continuity_term(Real p_i, Real p_j, const Vec2& rest_gradient, const Vec2& r_ij) const {
     return (p_i - p_j - rest_gradient.dot(r_ij)) * inverse_impedance_;
   }
+  // b along the axes that can hold a rest state (zero without the balance).
+  Vec2 rest_acceleration(const Vec2& body_acceleration) const {
+    return hydrostatic_balance ? Vec2(body_acceleration.cwiseProduct(rest_axes_)) : Vec2::Zero();
+  }
   // rho0 b, the rest state's pressure gradient (zero without the balance).
   Vec2 rest_pressure_gradient(const Vec2& body_acceleration) const {
-    return hydrostatic_balance ? Vec2(rho0_ * body_acceleration.cwiseProduct(rest_axes_)) : Vec2::Zero();
+    return rho0_ * rest_acceleration(body_acceleration);
   }
   // Which axes can hold a rest state's pressure gradient (1) and which are periodic (0).
   void set_periodic_axes(bool periodic_x, bool periodic_y) {

@@ -5,8 +5,18 @@
 //              velocity, doubled (paper Eqs. 29 and 31, the wall term of the viscous force and of
 //              the continuity equation; Adami et al. 2012):        2 (v_i - vbar_a)
 //   pressure   extrapolated from the fluid particle to the dummy particle (paper Eq. 30; Adami et
-//              al. 2012), with the boundary's averaged acceleration:
-//                p^d_ia = p_i + rho_i max(0, (a^prior_i - abar_a) . (r_a - r_i))
+//              al. 2012), with the boundary's averaged acceleration. With the fluid's
+//              rest_state_at_walls the rest state's pressure gradient G = rho0 b (b: the body force
+//              along the axes that are not periodic, riemann_dissipation.hpp) is continued whole,
+//              and the rest of the acceleration clipped at zero as the paper's code does (G = 0
+//              without the option: the paper's clip of the whole acceleration):
+//                p^d_ia = p_i + rho_i max(0, (a^prior_i - b - abar_a) . (r_a - r_i))
+//                         + max(G . (r_a - r_i), min(-p_i, 0))
+//              Clipped as a whole (b's part inside the max), a dummy above particle i (under a
+//              body, beside a side wall) keeps p_i where the column at rest has p_i - rho0 g dy:
+//              a submerged cylinder's buoyancy falls 3 % below Archimedes at c = 20 sqrt(2 g H)
+//              (reports/pressure.md section 18). The continuation does not take the dummy below
+//              the atmosphere's 0 where p_i is above it: above a free surface there is air.
 //   direction  of the Riemann dissipation across a boundary: the boundary's normal, turned to face
 //              the fluid particle (METHOD.md section 3)
 #pragma once
@@ -19,8 +29,11 @@ namespace mrsph {
 
 inline Vec2 wall_velocity_difference(const Vec2& v_i, const Vec2& vbar_a) { return 2.0 * (v_i - vbar_a); }
 
-inline Real wall_pressure(Real p_i, Real rho_i, const Vec2& acc_prior_i, const Vec2& abar_a, const Vec2& r_ai) {
-  return p_i + rho_i * std::max(Real(0), (acc_prior_i - abar_a).dot(r_ai));
+// acc_beyond_rest_i: a^prior_i - b. With G = 0 this is the paper's rule to the bit.
+inline Real wall_pressure(Real p_i, Real rho_i, const Vec2& acc_beyond_rest_i, const Vec2& abar_a, const Vec2& r_ai,
+                          const Vec2& rest_gradient) {
+  return p_i + rho_i * std::max(Real(0), (acc_beyond_rest_i - abar_a).dot(r_ai)) +
+         std::max(rest_gradient.dot(r_ai), std::min(-p_i, Real(0)));
 }
 
 // e_ia points from a to i; n_a is the boundary particle's normal.

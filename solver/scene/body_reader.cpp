@@ -69,6 +69,7 @@ void read_fluid_options(const SceneNode& node, FluidOptions& o) {
   o.viscous_lattice_correction = node.flag_or("viscous_lattice_correction", o.viscous_lattice_correction);
   o.pressure_lattice_correction = node.flag_or("pressure_lattice_correction", o.pressure_lattice_correction);
   o.refresh_pair_geometry = node.flag_or("refresh_pair_geometry", o.refresh_pair_geometry);
+  o.rest_state_at_walls = node.flag_or("rest_state_at_walls", o.rest_state_at_walls);
   o.left_to_flow = {!node.has("density_relaxation"), !node.has("pressure_lattice_correction"),
                     !node.has("refresh_pair_geometry")};
   o.advection_cfl = node.positive_or("advection_cfl", o.advection_cfl);
@@ -132,6 +133,9 @@ FluidBody read_fluid(const SceneNode& node, const DomainBox& box, double& budget
   fluid.riemann.configure(m.eos.rho0, m.eos.c0);
 
   read_fluid_options(node, fluid.options);
+  if (fluid.options.rest_state_at_walls && !fluid.riemann.hydrostatic_balance)
+    node.fail("rest_state_at_walls", "it continues the hydrostatic balance's rest state into the walls; "
+                                     "expected riemann.hydrostatic_balance true (the default) with it");
   velocity = read_initial_velocity(node);
   node.finish();
 
