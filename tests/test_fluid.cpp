@@ -507,3 +507,26 @@ TEST_CASE("The wall rule continues the rest state's pressure into a dummy partic
   for (const Vec2& r : {above, below, beside_above})
     CHECK(wall_pressure(p, rho_i, a, abar, r, none) == p + rho_i * std::max(Real(0), (a - abar).dot(r)));
 }
+
+TEST_CASE("The measured pressure moment is the lattice's on a lattice and follows the arrangement", "[fluid]") {
+  // density_summation.hpp: the mean of m_i = -1/2 sum_j V_j r_ij dW_ij over the particles with a full
+  // support. On the square lattice it must be kernel/lattice_moments.hpp's M1 (0.974 at h = 1.3 dp),
+  // computed there independently as a lattice sum.
+  LoadedScene s = scene_from(periodic_box(R"(, "pressure_lattice_correction": true, "measured_pressure_moment": true)"));
+  FluidBody& fluid = s.simulation->fluid();
+  reinitialise_density(fluid, s.simulation->fluid_inner(), s.simulation->fluid_contacts(), 1.0);
+  CHECK(fluid.gradient_moment == Approx(fluid.lattice_gradient).epsilon(1e-12));
+  CHECK(fluid.lattice_gradient == Approx(0.974).margin(0.001));
+  // Another arrangement, another moment: every other row shifted by 0.3 dp, the same number density.
+  for (auto& x : fluid.particles.pos)
+    if (std::lround(x.y() / 0.05 - 0.5) % 2 == 1) x.x() += 0.3 * 0.05;
+  s.simulation->rebuild_fluid_relations();
+  reinitialise_density(fluid, s.simulation->fluid_inner(), s.simulation->fluid_contacts(), 1.0);
+  CHECK(std::abs(fluid.gradient_moment - fluid.lattice_gradient) > 1e-4);
+  // Without the option the pressure force keeps the lattice's M1.
+  LoadedScene plain = scene_from(periodic_box(R"(, "pressure_lattice_correction": true)"));
+  FluidBody& p = plain.simulation->fluid();
+  for (auto& x : p.particles.pos) x.x() += 0.01 * std::sin(7.0 * x.y());  // another arrangement
+  reinitialise_density(p, plain.simulation->fluid_inner(), plain.simulation->fluid_contacts(), 1.0);
+  CHECK(p.gradient_moment == p.lattice_gradient);
+}

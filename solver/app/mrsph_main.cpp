@@ -33,6 +33,17 @@ constexpr int kExitInterrupted = 4;
 std::atomic<bool> g_stop_requested{false};
 extern "C" void request_stop(int) { g_stop_requested.store(true); }
 
+// What the fluid's pressure forces are measured from, divided by and continued into the walls with.
+std::string pressure_forces_description(const mrsph::Simulation& sim) {
+  const auto& f = sim.fluid();
+  std::string s = f.options.pressure_reference == mrsph::PressureReference::Mean ? "the mean pressure" : "zero";
+  if (f.options.pressure_lattice_correction)
+    s += f.options.measured_pressure_moment ? ", divided by the arrangement's measured moment" : ", divided by the lattice moment";
+  if (f.options.rest_state_at_walls && !f.riemann.rest_pressure_gradient(sim.body_force.constant).isZero())
+    s += ", the rest state continued into the walls";
+  return s;
+}
+
 void print_scene(const mrsph::LoadedScene& scene) {
   const mrsph::Simulation& sim = *scene.simulation;
   fmt::print("scene      {} ({})\n", scene.name, scene.file);
@@ -52,8 +63,7 @@ void print_scene(const mrsph::LoadedScene& scene) {
                : f.options.density_relaxation == 1.0 ? std::string("summation each advection step")
                                                         : fmt::format("summation each advection step, relaxed by {:g}",
                                                                       f.options.density_relaxation),
-               std::string(f.options.pressure_reference == mrsph::PressureReference::Mean ? "the mean pressure" : "zero") +
-                   (f.options.pressure_lattice_correction ? ", divided by the lattice moment" : ""),
+               pressure_forces_description(sim),
                !f.riemann.continuity ? "off"
                : f.riemann.rest_pressure_gradient(sim.body_force.constant).isZero() ? "on"
                                                                                     : "on, hydrostatically balanced",

@@ -87,7 +87,7 @@ struct PressureInteraction {
   const Vec2& body_acceleration;
   Real kick_dt;
   const NeighborList& inner_list;
-  Real scale = fluid.options.pressure_lattice_correction ? 1.0 / fluid.lattice_gradient : 1.0;
+  Real scale = fluid.options.pressure_lattice_correction ? 1.0 / fluid.gradient_moment : 1.0;
   Real delta = fluid.options.delta_sph;
   Real diffusion_scale = delta * fluid.h() * fluid.material.sound_speed();
   Vec2 rest_gradient = fluid.riemann.rest_pressure_gradient(body_acceleration);

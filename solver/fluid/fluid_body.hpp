@@ -64,6 +64,12 @@ struct FluidOptions {
   // difference runs 2.6 % slow; a still tank's pressure is 2.6 % high). Every pair force is scaled
   // alike, so momentum stays exact.
   bool pressure_lattice_correction = false;
+  // With the correction above, divide by the mean first moment of the fluid's own arrangement
+  // (particles with a full kernel support), measured at each density re-initialisation
+  // (density_summation.hpp), instead of the square lattice's M1: a settled column is nearly
+  // hexagonal (0.985-0.986), and the square lattice's 0.974 leaves its pressure 1.2 % low
+  // (reports/pressure.md section 18). One number for the whole fluid: momentum stays exact.
+  bool measured_pressure_moment = false;
   // delta of the delta-SPH density diffusion with Antuono's correction (density_diffusion.hpp),
   // in place of the Riemann pressure-difference term; 0: off (the paper's method).
   Real delta_sph = 0.0;
@@ -75,17 +81,18 @@ struct FluidOptions {
   // The wall rule's pressure (wall_rules.hpp) continues the hydrostatic balance's rest state rho0 g
   // into the dummy particles whole and clips only the rest of the acceleration; off: the paper's
   // code, which clips the whole continuation, so that a dummy above a fluid particle (under a body,
-  // beside a side wall) keeps the particle's pressure. On, a submerged cylinder's buoyancy no longer
-  // depends on c (3 % low at c = 20 sqrt(2 g H) off), but the still tank's bulk shows the pressure
-  // lattice correction's square-lattice moment, 1.2 % low (reports/pressure.md section 18).
+  // beside a side wall) keeps the particle's pressure: a submerged cylinder's buoyancy 3 % low at
+  // c = 20 sqrt(2 g H) (reports/pressure.md section 18).
   bool rest_state_at_walls = false;
-  // The three options above that the scene left to the flow (absent keys):
+  // The options above that the scene left to the flow (absent keys):
   // Simulation::resolve_automatic_fluid_options gives a fluid with a free surface the relaxed
-  // summation, the corrected pressure force and the refreshed geometry, which together hold a
-  // still column's pressure to its hydrostatic answer (reports/pressure.md section 14); any other
-  // fluid keeps the values above. Options built in code leave nothing to the flow.
+  // summation, the corrected pressure force with its measured moment, the refreshed geometry and
+  // the rest state continued into the walls, which together hold a still column's pressure to its
+  // hydrostatic answer (reports/pressure.md sections 14 and 18); any other fluid keeps the values
+  // above. Options built in code leave nothing to the flow.
   struct LeftToFlow {
-    bool density_relaxation = false, pressure_lattice_correction = false, refresh_pair_geometry = false;
+    bool density_relaxation = false, pressure_lattice_correction = false, refresh_pair_geometry = false,
+         rest_state_at_walls = false, measured_pressure_moment = false;
   } left_to_flow;
   Real advection_cfl = 0.25;            // paper Eq. 32
   Real acoustic_cfl = 0.6;              // paper Eq. 33
@@ -102,6 +109,7 @@ struct FluidBody {
   Real lattice_number_density;  // sigma0 for this dp and h
   Real lattice_laplacian;       // M2 for this dp and h, with the viscous regularisation 0.01 h
   Real lattice_gradient;        // M1 for this dp and h
+  Real gradient_moment;         // what the pressure lattice correction divides by: M1, or measured
   Real reference_pressure = 0.0;  // subtracted from p in the pair forces (PressureReference)
   Vec2Array density_gradient;     // <grad rho>^L of the delta-SPH diffusion, each acoustic step
   // With options.refresh_pair_geometry: positions at the list build, and each particle's displacement
@@ -112,7 +120,7 @@ struct FluidBody {
       : name(std::move(body_name)), dp(spacing), kernel(h_over_dp * spacing),
         lattice_number_density(mrsph::lattice_number_density(kernel, spacing)),
         lattice_laplacian(lattice_laplacian_moment(kernel, spacing, viscous_regularisation())),
-        lattice_gradient(lattice_gradient_moment(kernel, spacing)) {}
+        lattice_gradient(lattice_gradient_moment(kernel, spacing)), gradient_moment(lattice_gradient) {}
   Real h() const { return kernel.h(); }
   Real viscous_regularisation() const { return 0.01 * kernel.h(); }  // paper Eq. 22
 };

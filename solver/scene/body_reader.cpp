@@ -70,8 +70,13 @@ void read_fluid_options(const SceneNode& node, FluidOptions& o) {
   o.pressure_lattice_correction = node.flag_or("pressure_lattice_correction", o.pressure_lattice_correction);
   o.refresh_pair_geometry = node.flag_or("refresh_pair_geometry", o.refresh_pair_geometry);
   o.rest_state_at_walls = node.flag_or("rest_state_at_walls", o.rest_state_at_walls);
+  o.measured_pressure_moment = node.flag_or("measured_pressure_moment", o.measured_pressure_moment);
+  if (o.measured_pressure_moment && node.has("pressure_lattice_correction") && !o.pressure_lattice_correction)
+    node.fail("measured_pressure_moment", "it is the moment the pressure lattice correction divides by; "
+                                          "expected pressure_lattice_correction true (or left to the flow) with it");
   o.left_to_flow = {!node.has("density_relaxation"), !node.has("pressure_lattice_correction"),
-                    !node.has("refresh_pair_geometry")};
+                    !node.has("refresh_pair_geometry"), !node.has("rest_state_at_walls"),
+                    !node.has("measured_pressure_moment")};
   o.advection_cfl = node.positive_or("advection_cfl", o.advection_cfl);
   o.acoustic_cfl = node.positive_or("acoustic_cfl", o.acoustic_cfl);
 }
