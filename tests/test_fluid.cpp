@@ -126,12 +126,13 @@ TEST_CASE("A water column holds the hydrostatic pressure on average", "[fluid]")
   int n = 0;
   for (std::size_t k = 0; k < r.series[0].time.size(); ++k)
     if (r.series[0].time[k] > 0.5) { sum += r.series[0].values[k][0]; ++n; }
-  // rho g (H - y) = 981 Pa at mid-depth. A free surface's defaults divide the pressure force by its
-  // lattice moment M1 = 0.974 (kernel/lattice_moments.hpp; without it the column would hold itself
-  // up with 981 / 0.974) and filter the summation's noise (reports/pressure.md section 14). 1.5 %:
-  // the settled column's arrangement has M1 = 0.986, not the square lattice's, which leaves the bulk
-  // 0.6-0.8 % low (the same tank at H/dp = 40, section 14), and the breathing is damped by t = 0.5 s.
-  CHECK(sum / n == Approx(1000 * 9.81 * 0.1).epsilon(0.015));
+  // rho g (H - y) = 981 Pa at mid-depth. A free surface's defaults divide the pressure force by the
+  // first moment of the column's own arrangement (without it the column would hold itself up with
+  // 981 / M1; with the square lattice's M1 = 0.974 on a column that settles to 0.986, 1.2 % low),
+  // continue the rest state into the walls and filter the summation's noise (reports/pressure.md
+  // sections 14 and 18: 976 Pa here). 1 %: issue 17's accuracy target for the still tank; the
+  // breathing is damped by t = 0.5 s.
+  CHECK(sum / n == Approx(1000 * 9.81 * 0.1).epsilon(0.01));
   double top = 0.0;
   for (const auto& p : s.simulation->fluid().particles.pos) top = std::max(top, p.y());
   CHECK(top < 0.2 + 0.01);  // no particle thrown off the free surface
