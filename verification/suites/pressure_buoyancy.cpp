@@ -67,7 +67,7 @@ void run_submerged_cylinder(const SuiteContext& ctx, SuiteSummary& summary) {
   // Settling as in the still tank (pressure_fields.cpp): the acoustic breathing is damped within a second.
   const double settle = ctx.quick ? 1.0 : 1.5, end_time = ctx.quick ? 2.0 : 3.0;
   const std::vector<BuoyancyCase> plan = ctx.quick ? std::vector<BuoyancyCase>{{20, 10}}
-                                                   : std::vector<BuoyancyCase>{{20, 10}, {40, 10}, {80, 10}, {40, 20}, {40, 40}};
+                                                   : std::vector<BuoyancyCase>{{20, 10}, {40, 10}, {80, 10}, {40, 20}, {40, 30}, {40, 40}};
   std::vector<SuiteRun> records;
   for (const BuoyancyCase& c : plan) records.push_back(run_buoyancy(ctx, c, settle, end_time));
   const std::string source =
@@ -82,7 +82,9 @@ void run_submerged_cylinder(const SuiteContext& ctx, SuiteSummary& summary) {
   if (ctx.quick) {
     check(0, 0.05);
   } else {
-    for (std::size_t k : {std::size_t(1), std::size_t(3), std::size_t(4)}) check(k, 0.01);
+    // c = 10, 20, 30 and 40 sqrt(2 g H) (reports/pressure.md sections 17-18: 20 was 1.6 % with the
+    // paper's wall clip, 30 is 2.0 % with the rest state at the walls).
+    for (std::size_t k : {std::size_t(1), std::size_t(3), std::size_t(4), std::size_t(5)}) check(k, 0.01);
   }
   for (SuiteRun& r : records) summary.add_run(std::move(r));
 }
