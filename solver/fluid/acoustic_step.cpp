@@ -68,7 +68,7 @@ struct PressureInteraction {
   struct Sum {
     Real p, rho;
     Real p_relative;      // p_i - 2 p_ref: the pair forces use p_i + p_j - 2 p_ref
-    Real vol_scaled;      // V_i, divided by M1 with the pressure lattice correction
+    Real vol_scaled;      // V_i, divided by FluidBody::gradient_moment with the pressure lattice correction
     Vec2 acc_beyond_rest;  // F^prior_i / m_i + g - g_rest: the wall pressure's clipped acceleration
     Vec2 moved;           // r_i - r_i at the list build (kRefresh)
     Vec2 force = Vec2::Zero();

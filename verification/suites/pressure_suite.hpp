@@ -3,7 +3,7 @@
 //   Turek & Hron CFD1-CFD3 (Re = 20, 100 steady; 200 periodic): drag, lift, Strouhal number on a
 //     resolution ladder and at three sound speeds (the incompressible limit must not depend on c)
 //   still water tank: pressure against rho g (H - y) after settling, and its noise
-//   a cylinder under the surface of still water: its buoyancy against Archimedes, at three sound speeds
+//   a cylinder under the surface of still water: its buoyancy against Archimedes, at four sound speeds
 //   Taylor-Green vortex: velocity decay and the pressure field against the analytic solution
 #pragma once
 
