@@ -25,6 +25,9 @@ std::string state_bytes(const LoadedScene& s, const RunnerState& runner) {
 RunOptions options_for(const LoadedScene& s) {
   RunOptions o;
   o.end_time = kEnd;
+  // Records every 0.2, so the checkpoint (after t = 0.4, at an advection step's end) falls inside an
+  // interval over which the force observer averages: its impulse record must survive the restart.
+  o.observer_interval = 0.2;
   o.scene_document = &s.document;
   o.scene_file = s.file;
   return o;

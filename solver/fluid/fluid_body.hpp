@@ -143,14 +143,15 @@ struct FluidContact {
   // applies that dissipation in the next acoustic step; so does the boundary. Indexed by boundary
   // particle, so it survives the rebuild of the pair list between advection steps.
   Vec2Array boundary_dissipation_reaction;
-  // Momentum the fluid gave this boundary since the start of the current advection step, and the
-  // time that covers: impulse / duration is the force averaged over the step (the force observer's
-  // drag and lift), where the pair forces above hold only the last acoustic step. Summing the
-  // pairs every acoustic step costs a few percent of a step, so only contacts whose force is
-  // observed keep the record.
+  // Momentum the fluid gave this boundary since the record was last cleared (by its reader: the
+  // runner, after each observer record), its viscous part, and the time that covers: impulse /
+  // duration is the force averaged over that time (the force observer's drag and lift), where the
+  // pair forces above hold only the last acoustic step. Summing the pairs every acoustic step costs
+  // a few percent of a step, so only contacts whose force is observed keep the record.
   bool records_impulse = false;
-  Vec2 step_impulse = Vec2::Zero();
-  Real step_duration = 0.0;
+  Vec2 recorded_impulse = Vec2::Zero();
+  Vec2 recorded_viscous_impulse = Vec2::Zero();
+  Real recorded_duration = 0.0;
 };
 
 }  // namespace mrsph

@@ -33,22 +33,31 @@ Vec2 viscous_force_on_boundary(const FluidContact& contact) {
 
 void clear_boundary_impulses(std::vector<FluidContact>& contacts) {
   for (FluidContact& c : contacts) {
-    c.step_impulse = Vec2::Zero();
-    c.step_duration = 0.0;
+    c.recorded_impulse = Vec2::Zero();
+    c.recorded_viscous_impulse = Vec2::Zero();
+    c.recorded_duration = 0.0;
   }
 }
 
 void add_boundary_impulses(std::vector<FluidContact>& contacts, Real dt) {
   for (FluidContact& c : contacts) {
     if (!c.records_impulse) continue;
-    c.step_impulse += dt * total_force_on_boundary(c);
-    c.step_duration += dt;
+    c.recorded_impulse += dt * total_force_on_boundary(c);
+    c.recorded_viscous_impulse += dt * viscous_force_on_boundary(c);
+    c.recorded_duration += dt;
   }
 }
 
 Vec2 mean_force_on_boundary(const FluidContact& contact) {
-  if (contact.records_impulse && contact.step_duration > 0.0) return contact.step_impulse / contact.step_duration;
+  if (contact.records_impulse && contact.recorded_duration > 0.0)
+    return contact.recorded_impulse / contact.recorded_duration;
   return total_force_on_boundary(contact);
+}
+
+Vec2 mean_viscous_force_on_boundary(const FluidContact& contact) {
+  if (contact.records_impulse && contact.recorded_duration > 0.0)
+    return contact.recorded_viscous_impulse / contact.recorded_duration;
+  return viscous_force_on_boundary(contact);
 }
 
 void begin_kinematics_average(SolidParticles& solid) {

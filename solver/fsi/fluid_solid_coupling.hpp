@@ -32,13 +32,15 @@ Vec2 total_force_on_boundary(const FluidContact& contact);
 // The viscous part of it: the pairs' viscous forces, computed once per advection step.
 Vec2 viscous_force_on_boundary(const FluidContact& contact);
 
-// The impulse record of the contacts that keep one (FluidContact::records_impulse): cleared at the
-// start of an advection step; a kick of the fluid by dt adds dt times the boundary's share of it.
+// The impulse record of the contacts that keep one (FluidContact::records_impulse): a kick of the
+// fluid by dt adds dt times the boundary's share of it; the record's reader clears it.
 void clear_boundary_impulses(std::vector<FluidContact>& contacts);
 void add_boundary_impulses(std::vector<FluidContact>& contacts, Real dt);
-// The force of the fluid on a boundary averaged over the last advection step (the current
-// acoustic step's if the contact keeps no record or no step has been taken yet).
+// The force of the fluid on a boundary, and its viscous part, averaged over the time since the
+// record was cleared (the current acoustic step's if the contact keeps no record or no step has
+// been taken since).
 Vec2 mean_force_on_boundary(const FluidContact& contact);
+Vec2 mean_viscous_force_on_boundary(const FluidContact& contact);
 
 void begin_kinematics_average(SolidParticles& solid);
 void end_kinematics_average(SolidParticles& solid, Real dt, SolidKinematics mode);

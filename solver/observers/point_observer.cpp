@@ -110,7 +110,7 @@ std::vector<Real> PointObserver::sample(const Simulation& sim) const {
     Vec2 total = Vec2::Zero(), viscous = Vec2::Zero();
     for (std::size_t k : contact_indices_) {
       total += mean_force_on_boundary(sim.fluid_contacts()[k]);
-      viscous += viscous_force_on_boundary(sim.fluid_contacts()[k]);
+      viscous += mean_viscous_force_on_boundary(sim.fluid_contacts()[k]);
     }
     return {total.x(), total.y(), viscous.x(), viscous.y()};
   }

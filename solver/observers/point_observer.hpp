@@ -5,9 +5,10 @@
 //     that sits inside the tip does not bias the mean.
 //   fluid body, "velocity" / "pressure": a Shepard average of the fluid particles within the
 //     fluid's kernel support of the point, at the sampling time.
-//   boundary bodies, "force": the total force of the fluid on the listed wall and solid bodies,
-//     averaged over the advection step (fx, fy), and its viscous part (fx_viscous, fy_viscous),
-//     constant over the step; the rest is the pressure's (and the Riemann dissipation's, if on).
+//   boundary bodies, "force": the total force of the fluid on the listed wall and solid bodies
+//     (fx, fy) and its viscous part (fx_viscous, fy_viscous), averaged over the time since the
+//     previous record (the observer interval, or the advection step when observers record every
+//     step); the rest is the pressure's (and the Riemann dissipation's, if on).
 //   fluid body, "front": the largest coordinate of the fluid particles along a direction (the
 //     surge front of a dam break), max_i r_i . d.
 //   two solid bodies, "gap": the smallest distance between a particle of one and a particle of the

@@ -11,8 +11,8 @@ namespace mrsph {
 namespace {
 
 constexpr char kMagic[8] = {'M', 'R', 'S', 'P', 'H', 'C', 'K', '1'};
-constexpr std::uint32_t kVersion = 4;  // 2: the compressibility record; 3: open boundaries (particle count, zones, ledgers);
-                                       // 4: the solids' contact stiffnesses
+constexpr std::uint32_t kVersion = 5;  // 2: the compressibility record; 3: open boundaries (particle count, zones, ledgers);
+                                       // 4: the solids' contact stiffnesses; 5: the force observers' impulse records
 
 std::string read_all(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
@@ -44,6 +44,22 @@ struct Loader {
   template <class T>
   void operator()(std::vector<T>& a, const char* what) { a = r.array<T>(a.size(), what); }
 };
+
+// The force observers' impulse record (FluidContact::recorded_*): a restart inside an observer
+// interval continues its average.
+void save_impulse_record(BinaryWriter& w, const FluidContact& c) {
+  for (Real v : {c.recorded_impulse.x(), c.recorded_impulse.y(), c.recorded_viscous_impulse.x(),
+                 c.recorded_viscous_impulse.y(), c.recorded_duration})
+    w.value(v);
+}
+
+void load_impulse_record(BinaryReader& r, FluidContact& c) {
+  for (Vec2* v : {&c.recorded_impulse, &c.recorded_viscous_impulse}) {
+    v->x() = r.value<Real>();
+    v->y() = r.value<Real>();
+  }
+  c.recorded_duration = r.value<Real>();
+}
 
 }  // namespace
 
@@ -91,7 +107,10 @@ std::string serialise_checkpoint(const Json& scene_document, const std::string& 
     w.array(b.mean_normal_velocity);
   }
   w.value<std::uint64_t>(sim.fluid_contacts().size());
-  for (const FluidContact& c : sim.fluid_contacts()) save(c.boundary_dissipation_reaction, "");
+  for (const FluidContact& c : sim.fluid_contacts()) {
+    save(c.boundary_dissipation_reaction, "");
+    save_impulse_record(w, c);
+  }
   w.value<std::uint64_t>(sim.solids().size());
   for (const SolidBody& solid : sim.solids()) SolidParticles::for_each_state_field(solid.particles, save);
   return w.bytes();
@@ -162,7 +181,10 @@ void restore_checkpoint(const std::filesystem::path& path, Simulation& sim, Runn
   }
   const auto contacts = r.value<std::uint64_t>();
   if (contacts != sim.fluid_contacts().size()) throw std::runtime_error(path.string() + ": boundary bodies differ from the scene");
-  for (FluidContact& c : sim.fluid_contacts()) load(c.boundary_dissipation_reaction, "boundary dissipation reactions");
+  for (FluidContact& c : sim.fluid_contacts()) {
+    load(c.boundary_dissipation_reaction, "boundary dissipation reactions");
+    load_impulse_record(r, c);
+  }
   const auto solids = r.value<std::uint64_t>();
   if (solids != sim.solids().size()) throw std::runtime_error(path.string() + ": solid bodies differ from the scene");
   for (SolidBody& solid : sim.solids()) SolidParticles::for_each_state_field(solid.particles, load);

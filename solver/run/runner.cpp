@@ -2,6 +2,7 @@
 
 #include "io/csv_table.hpp"
 #include "io/vtp_writer.hpp"
+#include "fsi/fluid_solid_coupling.hpp"
 #include "observers/snapshot.hpp"
 #include "run/checkpoint.hpp"
 
@@ -151,6 +152,9 @@ class RunLoop {
       state_.series[k].time.push_back(sim_.time);
       state_.series[k].values.push_back(observers_[k].sample(sim_));
     }
+    // Force observers average over the time since the previous record, so a record does not sample
+    // one phase of an oscillation that the output times lock onto.
+    clear_boundary_impulses(sim_.fluid_contacts());
   }
   void handle_samples() {
     while (next_sample_ < samples_.size() && reached(sim_.time, samples_[next_sample_])) {

@@ -60,7 +60,6 @@ Real PositionVerletSchedule::advance(Simulation& sim, Real max_step) {
   compute_viscous_force(fluid, inner, contacts);
   correct_transport_velocity(fluid, inner, contacts);
   for (SolidBody& solid : sim.solids()) update_solid_normals(solid);
-  clear_boundary_impulses(contacts);
 
   Real elapsed = 0.0, step_length = Dt;
   for (bool last = false; !last;) {

@@ -52,7 +52,6 @@ Real VelocityVerletSchedule::advance(Simulation& sim, Real max_step) {
   // The pair lists were rebuilt: forces of the current state on the new lists.
   advance_density_and_position(fluid, 0.0, 0.0);
   evaluate_forces(sim, sim.fluid_body_acceleration(t0));
-  clear_boundary_impulses(contacts);
 
   Real elapsed = 0.0;
   for (bool last = false; !last;) {
