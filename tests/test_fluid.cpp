@@ -224,9 +224,9 @@ TEST_CASE("The compressibility record keeps the largest density deviation and Ma
 
 TEST_CASE("The boundary impulses recorded over one or several advection steps close the fluid's momentum balance to round-off", "[fluid]") {
   // A periodic channel with a cylinder, driven by a body force: over each advection step, and over
-  // several, the fluid's momentum changes by the body force's impulse minus what it gave the walls and
-  // the cylinder, and the force observer reports that impulse over the record's duration (drag and lift as momentum
-  // actually transferred, not the force of the step's last acoustic sub-step). The pair forces are
+  // several, the fluid's momentum changes by the body force's impulse minus what it gave the walls
+  // and the cylinder, and the force observer reports that impulse over the record's duration (drag
+  // and lift as momentum actually transferred, not the force of the step's last acoustic sub-step). The pair forces are
   // measured from the fluid's mean pressure (a confined fluid): that constant must not break the
   // balance.
   LoadedScene s = scene_from(R"({

@@ -1,8 +1,8 @@
 #include "run/runner.hpp"
 
+#include "fsi/fluid_solid_coupling.hpp"
 #include "io/csv_table.hpp"
 #include "io/vtp_writer.hpp"
-#include "fsi/fluid_solid_coupling.hpp"
 #include "observers/snapshot.hpp"
 #include "run/checkpoint.hpp"
 
