@@ -226,9 +226,9 @@ TEST_CASE("The boundary impulses recorded over one or several advection steps cl
   // A periodic channel with a cylinder, driven by a body force: over each advection step, and over
   // several, the fluid's momentum changes by the body force's impulse minus what it gave the walls
   // and the cylinder, and the force observer reports that impulse over the record's duration (drag
-  // and lift as momentum actually transferred, not the force of the step's last acoustic sub-step). The pair forces are
-  // measured from the fluid's mean pressure (a confined fluid): that constant must not break the
-  // balance.
+  // and lift as momentum actually transferred, not the force of the step's last acoustic sub-step).
+  // The pair forces are measured from the fluid's mean pressure (a confined fluid): that constant
+  // must not break the balance.
   LoadedScene s = scene_from(R"({
     "parameters": {"dp": 0.1},
     "domain": {"lower": [0, -0.5], "upper": [4, 2.5], "periodic": [true, false]},

@@ -81,8 +81,8 @@ struct FluidOptions {
   // The wall rule's pressure (wall_rules.hpp) continues the hydrostatic balance's rest state rho0 g
   // into the dummy particles whole and clips only the rest of the acceleration; off: the paper's
   // code, which clips the whole continuation, so that a dummy above a fluid particle (under a body,
-  // beside a side wall) keeps the particle's pressure: a submerged cylinder's buoyancy 3 % low at
-  // c = 20 sqrt(2 g H) (reports/pressure.md section 18).
+  // beside a side wall) keeps the particle's pressure: a submerged cylinder's buoyancy 2.2-4.1 %
+  // high at every c (reports/pressure.md section 19).
   bool rest_state_at_walls = false;
   // The options above that the scene left to the flow (absent keys):
   // Simulation::resolve_automatic_fluid_options gives a fluid with a free surface the relaxed

@@ -143,8 +143,8 @@ constexpr std::size_t kSortInterval = 100;  // advection steps between reorderin
 //     particle motion in proportion to the pressure (section 9);
 //   - the rest state rho0 g continued into the walls' dummies, and the pressure force divided by
 //     the moment of the column's own arrangement, not the square lattice's: the tank within 0.5 %
-//     at H/dp = 20, 40 and 80, a submerged body's buoyancy without the 3 % deficit that the paper's
-//     clip gave at c = 20 sqrt(2 g H) (section 18).
+//     at H/dp = 20, 40 and 80, a submerged body's buoyancy +0.3 to +1.8 % where the paper's clip
+//     gives +2.2 to +4.1 % (sections 18 and 19).
 constexpr Real kFreeSurfaceDensityRelaxation = 0.05;
 
 void use_free_surface_defaults(FluidOptions& o) {
