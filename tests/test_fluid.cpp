@@ -302,6 +302,34 @@ TEST_CASE("In steady plane Poiseuille flow the walls take the body force, all of
   CHECK(std::abs(total.x() - viscous.x()) < 0.01 * body_force);  // pressure: across the walls only
 }
 
+TEST_CASE("The viscous wall rule continues a linear shear into the wall exactly; the paper's mirror does not", "[fluid]") {
+  // u = y over a resting floor (y < 0 is wall): the Laplacian is zero, so the lattice-corrected
+  // operator must give no force on the rows next to the floor. The continuation gives each dummy
+  // particle -d_a, the mirror -y_i whatever its depth: the first row gets too little shear from the
+  // deeper dummies, the second too much (a slip of order dp; reports/pressure.md section 20).
+  for (const std::string rule : {"extrapolated", "mirrored"}) {
+    LoadedScene s = scene_from(R"json({
+      "parameters": {"dp": 0.05},
+      "domain": {"lower": [0, -0.25], "upper": [1, 1.25], "periodic": [true, false]},
+      "fluid": {"dp": "dp", "region": {"rectangle": {"lower": [0, 0], "upper": [1, 1]}},
+                "density": 1, "sound_speed": 10, "viscosity": 0.3, "viscous_wall_velocity": ")json" + rule + R"json("},
+      "walls": [{"name": "floor", "dp": "dp", "region": {"rectangle": {"lower": [0, -0.2], "upper": [1, 0]}}},
+                {"name": "lid", "dp": "dp", "region": {"rectangle": {"lower": [0, 1], "upper": [1, 1.2]}}}],
+      "end_time": 1})json");
+    Simulation& sim = *s.simulation;
+    FluidParticles& f = sim.fluid().particles;
+    for (std::size_t i = 0; i < f.size(); ++i) f.vel[i] = Vec2(f.pos[i].y(), 0.0);
+    compute_viscous_force(sim.fluid(), sim.fluid_inner(), sim.fluid_contacts());
+    const double h = sim.fluid().h(), shear_over_dp = 1.0 / 0.05;
+    double largest = 0.0;  // the operator's Laplacian of u on the rows within the floor's reach
+    for (std::size_t i = 0; i < f.size(); ++i)
+      if (f.pos[i].y() < 2.0 * h) largest = std::max(largest, std::abs(f.force_prior[i].x()) / (0.3 * f.vol[i]));
+    INFO(rule << ": largest |Laplacian| next to the floor " << largest << ", shear / dp " << shear_over_dp);
+    if (rule == "extrapolated") CHECK(largest < 1e-9 * shear_over_dp);  // round-off: the sums are exact
+    else CHECK(largest > 0.01 * shear_over_dp);  // 0.036 shear / dp on the first row at h = 1.3 dp
+  }
+}
+
 TEST_CASE("delta-SPH diffusion vanishes on a linear density, at a free surface too, and damps particle-scale noise", "[fluid]") {
   // Antuono et al. (2010): the corrected term is zero pair by pair for a density linear in space,
   // so a hydrostatic column is not diffused; the plain term of Molteni & Colagrossi would be

@@ -19,7 +19,8 @@ struct WallBody {
       : name(std::move(body_name)), dp(spacing), kernel(h_over_dp * spacing) {}
   Real h() const { return kernel.h(); }
   BoundaryView boundary_view() const {
-    return BoundaryView{&particles.vol, &particles.normal, &particles.vel_ave, &particles.acc_ave, /*pos=*/nullptr};  // never moves
+    return BoundaryView{&particles.vol, &particles.normal, &particles.vel_ave, &particles.acc_ave, /*pos=*/nullptr,  // never moves
+                        &particles.depth};
   }
 };
 

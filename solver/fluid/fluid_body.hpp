@@ -84,6 +84,10 @@ struct FluidOptions {
   // beside a side wall) keeps the particle's pressure: a submerged cylinder's buoyancy 2.2-4.1 %
   // high at every c (reports/pressure.md section 19).
   bool rest_state_at_walls = false;
+  // The viscous force's wall term with the paper's mirrored velocity 2 (v_i - vbar_a); off (the
+  // default): the velocity continued linearly through the wall (wall_rules.hpp), with which a
+  // channel's profile converges at second order instead of 0.6 (reports/pressure.md section 20).
+  bool mirrored_wall_velocity = false;
   // The options above that the scene left to the flow (absent keys):
   // Simulation::resolve_automatic_fluid_options gives a fluid with a free surface the relaxed
   // summation, the corrected pressure force with its measured moment, the refreshed geometry and
@@ -135,6 +139,9 @@ struct FluidContact {
   TransposedContacts pairs_of_boundary;
   Vec2Array pair_pressure_force;      // written every acoustic step (first half)
   Vec2Array pair_viscous_force;       // written once per advection step
+  // Each fluid particle's distance above the boundary's surface, from its nearest boundary particle
+  // (wall_rules.hpp), set with the viscous force; for the particles with pairs in this contact.
+  RealArray fluid_distance;
   Vec2Array pair_dissipation_force;   // Riemann momentum dissipation, written in the second half
   // With the fluid's refresh_pair_geometry, for a moving boundary (boundary.pos set): its positions at
   // the list build, and its displacement since then (set before each pressure pass).

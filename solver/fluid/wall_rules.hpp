@@ -2,8 +2,19 @@
 // every fluid operator uses across a boundary, written once.
 //
 //   velocity   the no-slip mirror: the fluid's velocity relative to the boundary's averaged
-//              velocity, doubled (paper Eqs. 29 and 31, the wall term of the viscous force and of
-//              the continuity equation; Adami et al. 2012):        2 (v_i - vbar_a)
+//              velocity, doubled (paper Eqs. 29 and 31, the wall term of the continuity equation,
+//              and of the viscous force with the fluid's mirrored_wall_velocity; Adami et al.
+//              2012):                                                2 (v_i - vbar_a)
+//   viscous    the velocity continued linearly through the wall (Morris et al. 1997; Macia et al.
+//   velocity   2011 show the mirror's viscous operator inconsistent next to a wall): a dummy particle
+//              at depth d_a below the surface, seen from a fluid particle at distance d_i above it,
+//              moves with vbar_a - (d_a / d_i)(v_i - vbar_a):   (1 + d_a / d_i) (v_i - vbar_a)
+//              The mirror gives every dummy -v_i, as if each lay as deep as the fluid particle is
+//              high: a linear shear profile sees too little shear from the deeper dummies, a slip at
+//              the wall that shrinks only with dp (a Poiseuille channel's profile converges at order
+//              0.6 with it, about 2 with the continuation: reports/pressure.md section 20). d_i is
+//              floored at dp / 4, so that a fluid particle pressed against the wall does not
+//              amplify its velocity without bound.
 //   pressure   extrapolated from the fluid particle to the dummy particle (paper Eq. 30; Adami et
 //              al. 2012), with the boundary's averaged acceleration. With the fluid's
 //              rest_state_at_walls the rest state's pressure gradient G = rho0 b (b: the body force
@@ -28,6 +39,18 @@
 namespace mrsph {
 
 inline Vec2 wall_velocity_difference(const Vec2& v_i, const Vec2& vbar_a) { return 2.0 * (v_i - vbar_a); }
+
+// d_i: the fluid particle's distance above the surface (wall_distance_from_nearest), already floored.
+inline Vec2 wall_viscous_velocity_difference(const Vec2& v_i, const Vec2& vbar_a, Real d_i, Real d_a) {
+  return (1.0 + d_a / d_i) * (v_i - vbar_a);
+}
+
+// d_i from the boundary particle a nearest to i (e_ia from a to i, r_ia their distance, n_a its
+// normal, d_a its depth): the height of i above a's tangent, r_ia e_ia . n_a - d_a, floored at `floor`.
+// The nearest particle lies almost straight below i, so a curved surface's tangent errs little there.
+inline Real wall_distance_from_nearest(Real r_ia, const Vec2& e_ia, const Vec2& n_a, Real d_a, Real floor) {
+  return std::max(floor, r_ia * e_ia.dot(n_a) - d_a);
+}
 
 // acc_beyond_rest_i: a^prior_i - b. With G = 0 this is the paper's rule to the bit.
 inline Real wall_pressure(Real p_i, Real rho_i, const Vec2& acc_beyond_rest_i, const Vec2& abar_a, const Vec2& r_ai,

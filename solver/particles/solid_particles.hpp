@@ -23,6 +23,7 @@ struct SolidParticles {
   RealArray mass;
   RealArray vol0;        // reference volume, never updated
   Vec2Array normal0;     // outward normal in the reference configuration
+  RealArray depth0;      // distance below the body's surface in the reference configuration (viscous wall rule)
   Vec2Array normal;      // current normal, R(F) normal0
   Vec2Array force_prior; // force from the fluid, held constant over the solid sub-steps
   Vec2Array vel_ave;     // velocity averaged over the last acoustic step, seen by the fluid (Eq. 35)
@@ -48,7 +49,8 @@ struct SolidParticles {
   template <class Particles, class Visit>
   static void for_each_field(Particles& s, Visit&& visit) {
     visit(s.pos0, "reference positions"); visit(s.B, "correction matrices"); visit(s.mass, "solid masses");
-    visit(s.vol0, "reference volumes"); visit(s.normal0, "reference normals"); visit(s.constrained, "clamped flags");
+    visit(s.vol0, "reference volumes"); visit(s.normal0, "reference normals"); visit(s.depth0, "reference depths");
+    visit(s.constrained, "clamped flags");
     for_each_state_field(s, visit);
   }
 

@@ -71,6 +71,8 @@ void read_fluid_options(const SceneNode& node, FluidOptions& o) {
   o.refresh_pair_geometry = node.flag_or("refresh_pair_geometry", o.refresh_pair_geometry);
   o.rest_state_at_walls = node.flag_or("rest_state_at_walls", o.rest_state_at_walls);
   o.measured_pressure_moment = node.flag_or("measured_pressure_moment", o.measured_pressure_moment);
+  o.mirrored_wall_velocity =
+      node.choice_or("viscous_wall_velocity", {"extrapolated", "mirrored"}, "extrapolated") == "mirrored";
   if (o.measured_pressure_moment && node.has("pressure_lattice_correction") && !o.pressure_lattice_correction)
     node.fail("measured_pressure_moment", "it is the moment the pressure lattice correction divides by; "
                                           "expected pressure_lattice_correction true (or left to the flow) with it");

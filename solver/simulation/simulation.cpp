@@ -48,6 +48,7 @@ void Simulation::initialise() {
     NeighborList inner;
     inner.build(wall.particles.pos, grid, wall.kernel, /*exclude_self=*/true);
     wall.particles.normal = normals_from_kernel_gradient(wall.particles.vol, inner);
+    wall.particles.depth = depths_below_surface(wall.particles.normal, inner, wall.dp, wall.kernel.cutoff());
   }
   // Bodies in contact first: their gradient weights depend on it (initialise_solid).
   for (SolidContact& contact : solid_contacts) {

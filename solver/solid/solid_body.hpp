@@ -66,7 +66,8 @@ struct SolidBody {
       : name(std::move(body_name)), dp(spacing), kernel(h_over_dp * spacing), material(std::move(elastic)) {}
   Real h() const { return kernel.h(); }
   BoundaryView boundary_view() const {
-    return BoundaryView{&particles.vol0, &particles.normal, &particles.vel_ave, &particles.acc_ave, &particles.pos};
+    return BoundaryView{&particles.vol0, &particles.normal, &particles.vel_ave, &particles.acc_ave, &particles.pos,
+                        &particles.depth0};
   }
 };
 

@@ -68,6 +68,7 @@ void initialise_solid(SolidBody& solid) {
     s.stress[a] = Mat2::Zero();
   });
   s.normal0 = normals_from_kernel_gradient(s.vol0, solid.inner);
+  s.depth0 = depths_below_surface(s.normal0, solid.inner, solid.dp, solid.kernel.cutoff());
   s.normal = s.normal0;
   solid.external_force.assign(s.size(), Vec2::Zero());
   solid.active.clear();
