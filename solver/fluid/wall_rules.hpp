@@ -26,8 +26,9 @@
 //              Clipped as a whole (b's part inside the max), a dummy above particle i (under a
 //              body, beside a side wall) keeps p_i where the column at rest has p_i - rho0 g dy:
 //              the dummies under a submerged cylinder push it up too hard, its buoyancy 2.2-4.1 %
-//              above Archimedes at every c (reports/pressure.md section 19). The continuation does not take the dummy below
-//              the atmosphere's 0 where p_i is above it: above a free surface there is air.
+//              above Archimedes at every c (reports/pressure.md section 19). The continuation does
+//              not take the dummy below the atmosphere's 0 where p_i is above it: above a free
+//              surface there is air.
 //   direction  of the Riemann dissipation across a boundary: the boundary's normal, turned to face
 //              the fluid particle (METHOD.md section 3)
 #pragma once
