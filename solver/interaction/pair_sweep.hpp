@@ -123,6 +123,51 @@ MRSPH_INLINE_VISIT void visit_with_contacts(const NeighborList& inner, Contacts&
   }
 }
 
+// Two interactions of the same pairs in one sweep (sweep_with_contacts(inner, contacts,
+// Together<A, B>{a, b})): each keeps its own sum and sees the pairs in the order of the header, so
+// both give the bits they give alone, for one pass over the entries instead of two. A particle that
+// one of them skips is visited for the other; the skipping one's sum is dropped, not finished.
+template <class A, class B>
+struct Together {
+  A a;
+  B b;
+  template <class Op>
+  static bool skipped(const Op& op, std::size_t i) {
+    if constexpr (requires { op.skips(i); }) return op.skips(i);
+    else return false;
+  }
+  template <class Op, class Sum>
+  static void after_inner_of(const Op& op, std::size_t i, Sum& sum) {
+    if constexpr (requires { op.after_inner(i, sum); }) op.after_inner(i, sum);
+  }
+  struct Sum {
+    decltype(std::declval<const A&>().begin(0)) a;
+    decltype(std::declval<const B&>().begin(0)) b;
+  };
+  struct Side {
+    decltype(std::declval<const A&>().boundary(0)) a;
+    decltype(std::declval<const B&>().boundary(0)) b;
+  };
+  Sum begin(std::size_t i) const { return {a.begin(i), b.begin(i)}; }
+  MRSPH_INLINE_VISIT void inner(Sum& s, std::size_t i, const Neighbor& n) const {
+    a.inner(s.a, i, n);
+    b.inner(s.b, i, n);
+  }
+  void after_inner(std::size_t i, Sum& s) const {
+    after_inner_of(a, i, s.a);
+    after_inner_of(b, i, s.b);
+  }
+  Side boundary(std::size_t c) const { return {a.boundary(c), b.boundary(c)}; }
+  MRSPH_INLINE_VISIT void contact(Sum& s, std::size_t i, const Side& side, Index k, const Neighbor& n) const {
+    a.contact(s.a, i, side.a, k, n);
+    b.contact(s.b, i, side.b, k, n);
+  }
+  void finish(std::size_t i, const Sum& s) const {
+    if (!skipped(a, i)) a.finish(i, s.a);
+    if (!skipped(b, i)) b.finish(i, s.b);
+  }
+};
+
 // The parallel sweep over a fluid's inner list and its contacts (`contacts`: a range of structs with
 // a NeighborList `pairs`, fluid particle -> boundary particle).
 template <class Op, class Contacts>

@@ -1,10 +1,9 @@
 #include "time/position_verlet_schedule.hpp"
 
 #include "fluid/acoustic_step.hpp"
+#include "fluid/advection_pair_terms.hpp"
 #include "fluid/density_summation.hpp"
 #include "fluid/fluid_time_step.hpp"
-#include "fluid/transport_velocity.hpp"
-#include "fluid/viscous_force.hpp"
 #include "fsi/fluid_solid_coupling.hpp"
 #include "solid/solid_dynamics.hpp"
 #include "core/parallel.hpp"
@@ -57,8 +56,7 @@ Real PositionVerletSchedule::advance(Simulation& sim, Real max_step) {
   // Algorithm 1, once per advection step.
   reinitialise_density(fluid, inner, contacts, fluid.options.density_relaxation);
   sim.impose_boundary_states(0.0);
-  compute_viscous_force(fluid, inner, contacts);
-  correct_transport_velocity(fluid, inner, contacts);
+  compute_viscous_force_and_transport_shift(fluid, inner, contacts);
   for (SolidBody& solid : sim.solids()) update_solid_normals(solid);
 
   Real elapsed = 0.0, step_length = Dt;

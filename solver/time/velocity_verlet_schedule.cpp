@@ -1,10 +1,9 @@
 #include "time/velocity_verlet_schedule.hpp"
 
 #include "fluid/acoustic_step.hpp"
+#include "fluid/advection_pair_terms.hpp"
 #include "fluid/density_summation.hpp"
 #include "fluid/fluid_time_step.hpp"
-#include "fluid/transport_velocity.hpp"
-#include "fluid/viscous_force.hpp"
 #include "fsi/fluid_solid_coupling.hpp"
 #include "solid/solid_dynamics.hpp"
 #include "core/step_splitting.hpp"
@@ -46,8 +45,7 @@ Real VelocityVerletSchedule::advance(Simulation& sim, Real max_step) {
 
   reinitialise_density(fluid, inner, contacts, fluid.options.density_relaxation);
   sim.impose_boundary_states(0.0);
-  compute_viscous_force(fluid, inner, contacts);
-  correct_transport_velocity(fluid, inner, contacts);
+  compute_viscous_force_and_transport_shift(fluid, inner, contacts);
   for (SolidBody& solid : sim.solids()) update_solid_normals(solid);
   // The pair lists were rebuilt: forces of the current state on the new lists.
   advance_density_and_position(fluid, 0.0, 0.0);
