@@ -1,6 +1,8 @@
 #include "boundary/womersley_profile.hpp"
 #include "fluid/acoustic_step.hpp"
+#include "fluid/advection_pair_terms.hpp"
 #include "fluid/density_summation.hpp"
+#include "fluid/transport_velocity.hpp"
 #include "fluid/viscous_force.hpp"
 #include "fluid/wall_rules.hpp"
 #include "fsi/fluid_solid_coupling.hpp"
@@ -561,4 +563,47 @@ TEST_CASE("The measured pressure moment is the lattice's on a lattice and follow
   for (auto& x : p.particles.pos) x.x() += 0.01 * std::sin(7.0 * x.y());  // another arrangement
   reinitialise_density(p, plain.simulation->fluid_inner(), plain.simulation->fluid_contacts(), 1.0);
   CHECK(p.gradient_moment == p.lattice_gradient);
+}
+
+TEST_CASE("The viscous force and the shift in one sweep give the bits of the two sweeps", "[fluid]") {
+  // A disordered fluid sheared over a floor: every part of both interactions runs (inner pairs, the
+  // viscous term's after-inner scaling, the wall pairs with their per-pair forces, the shift).
+  const std::string scene = R"json({
+    "parameters": {"dp": 0.05},
+    "domain": {"lower": [0, -0.25], "upper": [1, 1.25], "periodic": [true, false]},
+    "fluid": {"dp": "dp", "region": {"rectangle": {"lower": [0, 0], "upper": [1, 1]}},
+              "density": 1, "sound_speed": 10, "viscosity": 0.3, "transport_velocity_alpha": 0.25},
+    "walls": [{"name": "floor", "dp": "dp", "region": {"rectangle": {"lower": [0, -0.2], "upper": [1, 0]}}},
+              {"name": "lid", "dp": "dp", "region": {"rectangle": {"lower": [0, 1], "upper": [1, 1.2]}}}],
+    "end_time": 1})json";
+  LoadedScene apart = scene_from(scene), together = scene_from(scene);
+  for (LoadedScene* s : {&apart, &together}) {
+    FluidParticles& f = s->simulation->fluid().particles;
+    std::mt19937 gen(5);
+    std::uniform_real_distribution<double> jitter(-0.01, 0.01);
+    for (std::size_t i = 0; i < f.size(); ++i) {
+      f.pos[i] += Vec2(jitter(gen), jitter(gen));
+      f.vel[i] = Vec2(f.pos[i].y(), 0.1 * std::sin(6.0 * f.pos[i].x()));
+    }
+    s->simulation->rebuild_fluid_relations();
+  }
+  Simulation& a = *apart.simulation;
+  Simulation& b = *together.simulation;
+  const Vec2Array before = b.fluid().particles.pos;
+  compute_viscous_force(a.fluid(), a.fluid_inner(), a.fluid_contacts());
+  correct_transport_velocity(a.fluid(), a.fluid_inner(), a.fluid_contacts());
+  compute_viscous_force_and_transport_shift(b.fluid(), b.fluid_inner(), b.fluid_contacts());
+  const FluidParticles& fa = a.fluid().particles;
+  const FluidParticles& fb = b.fluid().particles;
+  double largest_force = 0.0, largest_shift = 0.0;  // both terms ran
+  for (std::size_t i = 0; i < fa.size(); ++i) {
+    REQUIRE(fa.force_prior[i] == fb.force_prior[i]);
+    REQUIRE(fa.pos[i] == fb.pos[i]);
+    largest_force = std::max(largest_force, fb.force_prior[i].norm());
+    largest_shift = std::max(largest_shift, (fb.pos[i] - before[i]).norm());
+  }
+  for (std::size_t c = 0; c < a.fluid_contacts().size(); ++c)
+    REQUIRE(a.fluid_contacts()[c].pair_viscous_force == b.fluid_contacts()[c].pair_viscous_force);
+  CHECK(largest_force > 0.0);
+  CHECK(largest_shift > 0.0);
 }
