@@ -11,6 +11,7 @@ struct FsiCase {
   int ratio;
   int resolution;
   std::string schedule;
+  int sound_speed_factor = 10;  // c / U0; the scene's (the paper's) 10 adds no override
 };
 
 // The sweep entry of a case: the overrides the turek-hron suite uses, so runs are shared.
