@@ -10,6 +10,7 @@
 #include "run/runner.hpp"
 
 #include <catch2/catch.hpp>
+#include <fmt/format.h>
 
 #include <random>
 
@@ -606,4 +607,60 @@ TEST_CASE("The viscous force and the shift in one sweep give the bits of the two
     REQUIRE(a.fluid_contacts()[c].pair_viscous_force == b.fluid_contacts()[c].pair_viscous_force);
   CHECK(largest_force > 0.0);
   CHECK(largest_shift > 0.0);
+}
+
+TEST_CASE("Next to a wall the continuity equation carries the density as the summation moves it; the mirror twice as fast", "[fluid]") {
+  // wall_rules.hpp: a fluid moving as a whole towards a wall changes its summation density only through
+  // the wall's kernel sums. The summation's rule makes the continuity equation's wall term the time
+  // derivative of those sums, so that the next re-initialisation finds the density where the equation
+  // carried it; the paper's mirror doubles it. The derivative is a central difference of the summation
+  // over two copies of the lattice moved by -+ eps along the motion (the same particle order).
+  const Real eps = 1e-5;
+  const Vec2 v(0.0, -1.0);  // towards the bottom wall
+  auto scene = [&](const std::string& rule, Real offset) {
+    return scene_from(R"({
+      "parameters": {"dp": 0.05, "y0": )" + fmt::format("{:.17g}", offset) + R"(},
+      "domain": {"lower": [0, -0.3], "upper": [1, 1.3], "periodic": [true, false]},
+      "fluid": {"dp": "dp", "region": {"rectangle": {"lower": [0, "y0"], "upper": [1, "0.5 + y0"]}}, "density": 1,
+                "sound_speed": 10, "wall_continuity": ")" + rule + R"("},
+      "walls": [{"name": "bottom", "dp": "dp", "region": {"rectangle": {"lower": [0, -0.2], "upper": [1, 0]}}}],
+      "end_time": 1})");
+  };
+  auto summation = [&](Real offset) {
+    LoadedScene s = scene("summation", offset);
+    FluidBody& fluid = s.simulation->fluid();
+    reinitialise_density(fluid, s.simulation->fluid_inner(), s.simulation->fluid_contacts(), 1.0);
+    return fluid.particles.rho;
+  };
+  const RealArray after = summation(eps * v.y());    // the lattice moved by +eps v
+  const RealArray before = summation(-eps * v.y());  // by -eps v
+  for (const std::string rule : {"summation", "mirrored"}) {
+    LoadedScene s = scene(rule, 0.0);
+    FluidBody& fluid = s.simulation->fluid();
+    FluidParticles& f = fluid.particles;
+    reinitialise_density(fluid, s.simulation->fluid_inner(), s.simulation->fluid_contacts(), 1.0);
+    for (std::size_t i = 0; i < f.size(); ++i) {
+      f.vel[i] = v;
+      f.drho_dt[i] = 0.0;
+    }
+    add_velocity_divergence_and_dissipation(fluid, s.simulation->fluid_inner(), s.simulation->fluid_contacts());
+    // The summation divides by the lattice's kernel sum n0 V0 (1 on the lattice); the continuity
+    // equation multiplies by rho_i (rho0 there): their rates differ by that factor exactly.
+    const Real lattice_sum = fluid.lattice_number_density * f.mass[0] / fluid.material.rho0();
+    const Real factor = (rule == "mirrored" ? 2.0 : 1.0) * lattice_sum;
+    int near_wall = 0;
+    for (std::size_t i = 0; i < f.size(); ++i) {
+      const Real derivative = (after[i] - before[i]) / (2.0 * eps);
+      if (f.pos[i].y() + 0.5 * fluid.dp >= 2.0 * fluid.h()) {  // the wall's first row (y = -dp/2) out of reach
+        CHECK(std::abs(f.drho_dt[i]) < 1e-9);
+        CHECK(std::abs(derivative) < 1e-6);
+        continue;
+      }
+      ++near_wall;
+      // Central differences err by O(eps^2) relative: 1e-6 leaves room for round-off over eps.
+      CHECK(f.drho_dt[i] == Approx(factor * derivative).epsilon(1e-6));
+      CHECK(derivative > 0.0);  // approaching the wall compresses
+    }
+    CHECK(near_wall > 0);
+  }
 }

@@ -57,7 +57,7 @@ void print_scene(const mrsph::LoadedScene& scene) {
     const bool continuity = f.options.density == mrsph::DensityReinitialisation::None;
     fmt::print("           {} fluid: density by {}; pressure forces from {}; Riemann dissipation in continuity {}, in"
                " momentum {}; delta-SPH diffusion {}; pressure pass's pair geometry {}; viscous wall velocity {};"
-               " emptiest kernel support {:.0f} % filled\n",
+               " continuity's wall velocity {}; emptiest kernel support {:.0f} % filled\n",
                free_surface ? "free-surface" : sim.open_boundaries.empty() ? "confined" : "open (inlet/outlet)",
                continuity                               ? std::string("the continuity equation")
                : f.options.density_relaxation == 1.0 ? std::string("summation each advection step")
@@ -71,6 +71,7 @@ void print_scene(const mrsph::LoadedScene& scene) {
                f.options.delta_sph > 0.0 ? fmt::format("delta {:g}", f.options.delta_sph) : std::string("off"),
                f.options.refresh_pair_geometry ? "at each acoustic step" : "cached per advection step",
                f.options.mirrored_wall_velocity ? "mirrored (the paper's)" : "continued linearly into the wall",
+               f.options.mirrored_wall_continuity ? "mirrored (the paper's)" : "the boundary's (the summation's derivative)",
                100.0 * mrsph::smallest_support_fraction(f, sim.fluid_inner(), sim.fluid_contacts()));
   }
   for (const auto& b : sim.open_boundaries)

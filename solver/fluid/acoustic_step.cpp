@@ -182,6 +182,7 @@ struct DivergenceAndDissipation {
   const RiemannDissipation& riemann;
   std::vector<FluidContact>& contacts;
   Real position_dt, density_dt;
+  bool mirrored_wall_continuity;
 
   Sum begin(std::size_t i) const {
     if (position_dt != 0.0) f.pos[i] += position_dt * f.vel[i];
@@ -200,9 +201,9 @@ struct DivergenceAndDissipation {
   }
 
   void contact(Sum& s, std::size_t, const Side& b, Index k, const Neighbor& n) const {
-    const Vec2 difference = wall_velocity_difference(s.v, b.vbar[n.j]);
-    s.divergence += b.vol[n.j] * difference.dot(n.e) * n.dW;
+    s.divergence += b.vol[n.j] * wall_continuity_velocity_difference(s.v, b.vbar[n.j], mirrored_wall_continuity).dot(n.e) * n.dW;
     if (!riemann.momentum) return;
+    const Vec2 difference = wall_velocity_difference(s.v, b.vbar[n.j]);
     const Vec2 n_f = wall_normal_towards_fluid(n.e, b.normal[n.j]);
     const Real u = difference.dot(n_f);
     const Vec2 pair = (s.vol * b.vol[n.j] * riemann.momentum_coefficient(u) * n.dW) * n_f;
@@ -257,7 +258,8 @@ void add_velocity_divergence_and_dissipation(FluidBody& fluid, const NeighborLis
   for (FluidContact& c : contacts)
     c.pair_dissipation_force.assign(riemann.momentum ? c.pairs.pair_count() : 0, Vec2::Zero());
   sweep_with_contacts(inner, contacts,
-                      DivergenceAndDissipation{fluid.particles, riemann, contacts, position_dt, density_dt}, sharing);
+                      DivergenceAndDissipation{fluid.particles, riemann, contacts, position_dt, density_dt,
+                                               fluid.options.mirrored_wall_continuity}, sharing);
   for (FluidContact& c : contacts) {
     c.boundary_dissipation_reaction.assign(c.pairs_of_boundary.size(), Vec2::Zero());
     if (riemann.momentum) accumulate_boundary_reaction(c, c.pair_dissipation_force, c.boundary_dissipation_reaction);

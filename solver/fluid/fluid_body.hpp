@@ -88,6 +88,12 @@ struct FluidOptions {
   // default): the velocity continued linearly through the wall (wall_rules.hpp), with which a
   // channel's profile converges at second order instead of 0.6 (reports/pressure.md section 20).
   bool mirrored_wall_velocity = false;
+  // The continuity equation's wall term with the paper's mirrored velocity 2 (v_i - vbar_a); off:
+  // v_i - vbar_a, the time derivative of the density summation's wall term (wall_rules.hpp), so that
+  // the re-initialisation does not set the density back next to a moving body by a jump that grows
+  // as c^2 (reports/pressure.md section 22). Left to the flow: on only where no summation
+  // re-initialises the density (DensityReinitialisation::None).
+  bool mirrored_wall_continuity = false;
   // The options above that the scene left to the flow (absent keys):
   // Simulation::resolve_automatic_fluid_options gives a fluid with a free surface the relaxed
   // summation, the corrected pressure force with its measured moment, the refreshed geometry and
@@ -96,7 +102,7 @@ struct FluidOptions {
   // above. Options built in code leave nothing to the flow.
   struct LeftToFlow {
     bool density_relaxation = false, pressure_lattice_correction = false, refresh_pair_geometry = false,
-         rest_state_at_walls = false, measured_pressure_moment = false;
+         rest_state_at_walls = false, measured_pressure_moment = false, mirrored_wall_continuity = false;
   } left_to_flow;
   Real advection_cfl = 0.25;            // paper Eq. 32
   Real acoustic_cfl = 0.6;              // paper Eq. 33

@@ -2,9 +2,23 @@
 // every fluid operator uses across a boundary, written once.
 //
 //   velocity   the no-slip mirror: the fluid's velocity relative to the boundary's averaged
-//              velocity, doubled (paper Eqs. 29 and 31, the wall term of the continuity equation,
-//              and of the viscous force with the fluid's mirrored_wall_velocity; Adami et al.
-//              2012):                                                2 (v_i - vbar_a)
+//              velocity, doubled (paper Eqs. 29 and 31, of the Riemann momentum dissipation, and
+//              of the viscous force with the fluid's mirrored_wall_velocity; Adami et al. 2012):
+//                                                                    2 (v_i - vbar_a)
+//   continuity the wall term of the continuity equation, rho_i sum_a V_a (v_i - v^d_a).e_ia W'_ia.
+//              Where the density is re-initialised by summation, the dummy moves with the
+//              boundary, v^d_a = vbar_a:                              v_i - vbar_a
+//              the term is then the time derivative of the summation's own wall term
+//              (sum_a W_ia V_a), so between two summations the continuity equation carries the
+//              density where the next summation will find it. The mirror (v^d_a = 2 vbar_a - v_i,
+//              the paper's Eq. 31 and its code) moves it twice as fast as the summation does
+//              wherever the fluid moves relative to a boundary; each re-initialisation then sets
+//              the density back, a jump whose pressure is c^2 times the difference. Next to a
+//              moving body this made FSI2's amplitude depend on c (0.850 at c = 10 U0, 0.929 at
+//              40; with the summation's rule 0.820 and 0.817: reports/pressure.md section 22).
+//              Without a re-initialisation nothing defines the density but the continuity
+//              equation, and the mirror, a linear continuation of the velocity into the wall,
+//              keeps its divergence first-order consistent there.
 //   viscous    the velocity continued linearly through the wall (Morris et al. 1997; Macia et al.
 //   velocity   2011 show the mirror's viscous operator inconsistent next to a wall): a dummy particle
 //              at depth d_a below the surface, seen from a fluid particle at distance d_i above it,
@@ -40,6 +54,11 @@
 namespace mrsph {
 
 inline Vec2 wall_velocity_difference(const Vec2& v_i, const Vec2& vbar_a) { return 2.0 * (v_i - vbar_a); }
+
+// v_i - v^d_a in the continuity equation's wall term: the mirror's, or the summation's (above).
+inline Vec2 wall_continuity_velocity_difference(const Vec2& v_i, const Vec2& vbar_a, bool mirrored) {
+  return mirrored ? wall_velocity_difference(v_i, vbar_a) : Vec2(v_i - vbar_a);
+}
 
 // d_i: the fluid particle's distance above the surface (wall_distance_from_nearest), already floored.
 inline Vec2 wall_viscous_velocity_difference(const Vec2& v_i, const Vec2& vbar_a, Real d_i, Real d_a) {

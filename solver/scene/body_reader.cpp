@@ -76,9 +76,12 @@ void read_fluid_options(const SceneNode& node, FluidOptions& o) {
   if (o.measured_pressure_moment && node.has("pressure_lattice_correction") && !o.pressure_lattice_correction)
     node.fail("measured_pressure_moment", "it is the moment the pressure lattice correction divides by; "
                                           "expected pressure_lattice_correction true (or left to the flow) with it");
+  const std::string wall_continuity = node.choice_or("wall_continuity", {"automatic", "summation", "mirrored"}, "automatic");
+  o.mirrored_wall_continuity = wall_continuity == "mirrored";
   o.left_to_flow = {!node.has("density_relaxation"), !node.has("pressure_lattice_correction"),
                     !node.has("refresh_pair_geometry"), !node.has("rest_state_at_walls"),
-                    !node.has("measured_pressure_moment")};
+                    !node.has("measured_pressure_moment"),
+                    wall_continuity == "automatic"};
   o.advection_cfl = node.positive_or("advection_cfl", o.advection_cfl);
   o.acoustic_cfl = node.positive_or("acoustic_cfl", o.acoustic_cfl);
 }

@@ -178,6 +178,8 @@ void Simulation::resolve_automatic_fluid_options() {
   if (o.pressure_reference == PressureReference::Automatic)
     o.pressure_reference = confined ? PressureReference::Mean : PressureReference::Zero;
   if (o.density == DensityReinitialisation::FreeSurface) use_free_surface_defaults(o);
+  // The continuity equation's wall term follows what defines the density (wall_rules.hpp).
+  if (o.left_to_flow.mirrored_wall_continuity) o.mirrored_wall_continuity = o.density == DensityReinitialisation::None;
   fluid_->riemann.set_periodic_axes(box_.periodic[0], box_.periodic[1]);
 }
 
