@@ -12,7 +12,7 @@
 //              v^{n+1} = v^n + dt (f^p + f^d + F^prior)/m + dt g(t + dt/2)
 // Second half: r^{n+1} = r^{n+1/2} + dt/2 v^{n+1};
 //              drho/dt += rho_i sum_j V_j (v_i - v_j).e_ij dW_ij                          (Eq. 27)
-//                       + rho_i sum_a V_a 2 (v_i - vbar_a).e_ia dW_ia
+//                       + rho_i sum_a V_a (v_i - v^d_a).e_ia dW_ia   (v^d_a: wall_rules.hpp's continuity rule)
 //              f^d_i = V_i sum_j V_j Pi(u_ij) dW_ij e_ij + V_i sum_a V_a Pi(u_ia) dW_ia n_f  (if enabled)
 //              rho^{n+1} = rho^{n+1/2} + dt/2 drho/dt
 // f^d is applied in the next acoustic step, to the fluid and (with the opposite sign) to the
