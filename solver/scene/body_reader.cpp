@@ -37,6 +37,17 @@ GeneratedParticles generate_body(const SceneNode& node, const std::string& body,
   return generated;
 }
 
+// A body's particle spacing: positive and no larger than the domain (a larger one could not place two
+// particles, and one near the largest double overflows the kernel's support 2 h to infinity).
+Real read_spacing(const SceneNode& node, const DomainBox& box) {
+  const Real dp = node.positive("dp");
+  const Real extent = (box.upper - box.lower).maxCoeff();
+  const Real largest_support = 2.0 * 3.0 * dp;  // 2 h at the largest h/dp read_h_over_dp accepts
+  if (!(dp <= extent && std::isfinite(largest_support)))
+    node.fail("dp", fmt::format("expected a spacing no larger than the domain's extent {:g}, got {:g}", extent, dp));
+  return dp;
+}
+
 Real read_h_over_dp(const SceneNode& node, Real fallback) {
   if (!node.has("h_over_dp")) return fallback;
   const Real r = node.number("h_over_dp");
@@ -108,7 +119,7 @@ ElasticMaterial read_elastic_material(const SceneNode& mat) {
 FluidBody read_fluid(const SceneNode& node, const DomainBox& box, double& budget, ShapePtr& region,
                      InitialVelocity& velocity) {
   const std::string name = node.has("name") ? node.text("name") : "fluid";
-  const Real dp = node.positive("dp");
+  const Real dp = read_spacing(node, box);
   FluidBody fluid(name, dp, read_h_over_dp(node, 1.3));
   region = read_region(node, "region");
   const FillSpec fill = read_fill(node, "fill");
@@ -164,7 +175,7 @@ FluidBody read_fluid(const SceneNode& node, const DomainBox& box, double& budget
 
 WallBody read_wall(const SceneNode& node, const DomainBox& box, double& budget, ShapePtr& region) {
   const std::string name = node.text("name");
-  const Real dp = node.positive("dp");
+  const Real dp = read_spacing(node, box);
   WallBody wall(name, dp, read_h_over_dp(node, 1.3));
   region = read_region(node, "region");
   const FillSpec fill = read_fill(node, "fill");
@@ -178,7 +189,7 @@ WallBody read_wall(const SceneNode& node, const DomainBox& box, double& budget, 
 
 SolidBody read_solid(const SceneNode& node, const DomainBox& box, double& budget, ShapePtr& region) {
   const std::string name = node.text("name");
-  const Real dp = node.positive("dp");
+  const Real dp = read_spacing(node, box);
   const Real h_over_dp = read_h_over_dp(node, 1.3);
   region = read_region(node, "region");
   const FillSpec fill = read_fill(node, "fill");

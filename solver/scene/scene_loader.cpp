@@ -46,6 +46,8 @@ DomainBox read_domain(const SceneNode& node) {
   box.periodic = node.flag_pair_or("periodic", {false, false});
   if (!(box.upper.x() > box.lower.x() && box.upper.y() > box.lower.y()))
     node.fail("upper", "the upper corner must lie above and to the right of the lower corner");
+  if (!(box.upper - box.lower).allFinite())
+    node.fail("upper", "the domain's extent overflows: the corners must lie within a finite distance of each other");
   node.finish();
   return box;
 }
