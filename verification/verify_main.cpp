@@ -12,6 +12,7 @@
 #include <tbb/info.h>
 
 #include <chrono>
+#include <cstdio>
 #include <ctime>
 #include <filesystem>
 #include <fstream>
@@ -205,6 +206,9 @@ int execute(const Options& o, const std::vector<const verification::SuiteEntry*>
 }  // namespace
 
 int main(int argc, char** argv) {
+  // Line-buffered even into a pipe (CI's log): a suite's checks are otherwise flushed in 4 KB pieces
+  // and the next suite's progress lines (stderr) land in the middle of a check's line.
+  std::setvbuf(stdout, nullptr, _IOLBF, 0);
   Options options;
   CLI::App app{usage_text()};
   add_run_options(app, options);
