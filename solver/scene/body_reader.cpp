@@ -37,21 +37,25 @@ GeneratedParticles generate_body(const SceneNode& node, const std::string& body,
   return generated;
 }
 
+constexpr Real kSmallestHOverDp = 0.8, kLargestHOverDp = 3.0;
+
 // A body's particle spacing: positive and no larger than the domain (a larger one could not place two
 // particles, and one near the largest double overflows the kernel's support 2 h to infinity).
 Real read_spacing(const SceneNode& node, const DomainBox& box) {
   const Real dp = node.positive("dp");
   const Real extent = (box.upper - box.lower).maxCoeff();
-  const Real largest_support = 2.0 * 3.0 * dp;  // 2 h at the largest h/dp read_h_over_dp accepts
+  const Real largest_support = 2.0 * kLargestHOverDp * dp;
   if (!(dp <= extent && std::isfinite(largest_support)))
-    node.fail("dp", fmt::format("expected a spacing no larger than the domain's extent {:g}, got {:g}", extent, dp));
+    node.fail("dp", fmt::format("expected a spacing no larger than the domain's extent {:g} (and a finite kernel support), got {:g}",
+                                extent, dp));
   return dp;
 }
 
 Real read_h_over_dp(const SceneNode& node, Real fallback) {
   if (!node.has("h_over_dp")) return fallback;
   const Real r = node.number("h_over_dp");
-  if (!(r >= 0.8 && r <= 3.0)) node.fail("h_over_dp", fmt::format("expected a ratio h/dp in [0.8, 3], got {:g}", r));
+  if (!(r >= kSmallestHOverDp && r <= kLargestHOverDp))
+    node.fail("h_over_dp", fmt::format("expected a ratio h/dp in [{:g}, {:g}], got {:g}", kSmallestHOverDp, kLargestHOverDp, r));
   return r;
 }
 
