@@ -1,4 +1,5 @@
 #include "core/loop_team.hpp"
+#include "core/parallel.hpp"
 #include "core/thread_limit.hpp"
 
 #include <catch2/catch.hpp>
@@ -6,6 +7,7 @@
 #include <tbb/task_group.h>
 
 #include <atomic>
+#include <limits>
 #include <vector>
 
 using namespace mrsph;
@@ -58,3 +60,24 @@ TEST_CASE("A loop team does not wait for a helper that cannot come", "[parallel]
   });
 }
 
+
+TEST_CASE("Parallel searches find what a serial scan finds, on any number of threads", "[parallel]") {
+  // 10000 values with ties and NaNs: the first index holding the largest value (NaN skipped), and the
+  // first index meeting a condition, as a serial scan from index 0 finds them.
+  std::vector<double> v(10000);
+  for (std::size_t i = 0; i < v.size(); ++i) v[i] = static_cast<double>((i * 7919) % 1000);
+  v[17] = std::numeric_limits<double>::quiet_NaN();
+  v[9000] = std::numeric_limits<double>::quiet_NaN();
+  for (int threads : {1, 2, 4}) {
+    run_with_threads(threads, [&] {
+      const IndexedMax m = parallel_indexed_max(v.size(), [&](std::size_t i) { return v[i]; }, 64);
+      CHECK(m.value == 999.0);
+      std::size_t first = 0;
+      while (!(v[first] == 999.0)) ++first;
+      CHECK(m.index == first);
+      CHECK(parallel_find_first(v.size(), [&](std::size_t i) { return v[i] != v[i]; }, 64) == 17);
+      CHECK(parallel_find_first(v.size(), [&](std::size_t i) { return v[i] > 1000.0; }, 64) == v.size());
+      return 0;
+    });
+  }
+}

@@ -1,7 +1,9 @@
 #include "neighbor/neighbor_list.hpp"
+#include "core/thread_limit.hpp"
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <map>
 #include <random>
 #include <set>
@@ -172,4 +174,30 @@ TEST_CASE("A listed pair moved since the build has the geometry of a list built 
       ++compared;
     }
   CHECK(compared > 1000);
+}
+
+TEST_CASE("The cell grid sorts particles in the same order on any number of threads", "[neighbors][parallel]") {
+  // 5000 particles in a channel periodic along x (the non-periodic y sized from the bounding box):
+  // blocks of at least 1024 particles, so 1 to 4 blocks; each block's particles of a cell must go
+  // after those of earlier blocks, as one serial stable counting sort puts them.
+  DomainBox box;
+  box.lower = Vec2(0.0, 0.0);
+  box.upper = Vec2(6.0, 2.0);
+  box.periodic = {true, false};
+  const Vec2Array points = random_points(5000, Vec2(-0.5, 0.1), Vec2(6.5, 1.9), 11);
+  auto order_on = [&](int threads) {
+    std::vector<Index> order(points.size());
+    run_with_threads(threads, [&] {
+      CellGrid grid(box, 0.26);
+      grid.build(points);
+      for (std::size_t k = 0; k < order.size(); ++k) order[k] = grid.sorted_index(static_cast<Index>(k));
+      return 0;
+    });
+    return order;
+  };
+  const std::vector<Index> serial = order_on(1);
+  std::vector<Index> sorted = serial;
+  std::sort(sorted.begin(), sorted.end());
+  for (std::size_t k = 0; k < sorted.size(); ++k) REQUIRE(sorted[k] == static_cast<Index>(k));  // a permutation
+  for (int threads : {2, 3, 8}) CHECK(order_on(threads) == serial);
 }

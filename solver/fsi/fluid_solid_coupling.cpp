@@ -40,10 +40,18 @@ void clear_boundary_impulses(std::vector<FluidContact>& contacts) {
 }
 
 void add_boundary_impulses(std::vector<FluidContact>& contacts, Real dt) {
-  for (FluidContact& c : contacts) {
+  // Each contact's total and viscous force are serial sums over its pairs (their bits do not depend
+  // on the thread count); the sums of all contacts run side by side.
+  Vec2Array force(2 * contacts.size(), Vec2::Zero());
+  parallel_for_each(force.size(), [&](std::size_t k) {
+    const FluidContact& c = contacts[k / 2];
+    if (c.records_impulse) force[k] = k % 2 == 0 ? total_force_on_boundary(c) : viscous_force_on_boundary(c);
+  }, /*grain=*/1, Sharing::Balanced);
+  for (std::size_t k = 0; k < contacts.size(); ++k) {
+    FluidContact& c = contacts[k];
     if (!c.records_impulse) continue;
-    c.recorded_impulse += dt * total_force_on_boundary(c);
-    c.recorded_viscous_impulse += dt * viscous_force_on_boundary(c);
+    c.recorded_impulse += dt * force[2 * k];
+    c.recorded_viscous_impulse += dt * force[2 * k + 1];
     c.recorded_duration += dt;
   }
 }

@@ -83,6 +83,10 @@ class CellGrid {
   const Real* sorted_y() const { return sorted_y_.data(); }
 
  private:
+  using CellRange = std::array<std::array<int, 2>, 2>;  // per axis: the lowest and highest cell
+
+  void wrap_and_size(const Vec2Array& positions, std::size_t blocks);
+  void sort_by_cell(std::size_t blocks);
   int cell_coordinate(Real x, int axis) const {
     // floor() without the library call it is on the baseline x86-64 target; the same integer.
     const Real v = (x - origin_[axis]) / cell_size_[axis];
@@ -110,7 +114,7 @@ class CellGrid {
   std::vector<Index> cell_start_;
   std::vector<Index> sorted_;
   RealArray sorted_x_, sorted_y_;  // wrapped positions in cell order, contiguous per cell
-  std::array<std::array<int, 2>, 2> occupied_{};  // per axis: the lowest and highest cell holding particles
+  CellRange occupied_{};  // the cells holding particles
 };
 
 }  // namespace mrsph

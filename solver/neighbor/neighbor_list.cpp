@@ -1,5 +1,7 @@
 #include "neighbor/neighbor_list.hpp"
 
+#include "core/parallel.hpp"
+
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -124,12 +126,12 @@ void build_lists(const Vec2Array& queries, std::span<const ListRequest> requests
     for (std::size_t l = 0; l < lists; ++l)
       chunk_used[l][c] = requests[l].list->search_chunk(queries, requests[l], c, scratch, counts[l].data());
   });
-  for (std::size_t l = 0; l < lists; ++l) {
+  parallel_for_each(lists, [&](std::size_t l) {
     NeighborList& list = *requests[l].list;
     list.offsets_.assign(n + 1, 0);
     for (std::size_t i = 0; i < n; ++i) list.offsets_[i + 1] = list.offsets_[i] + counts[l][i];
     list.entries_.resize(list.offsets_[n]);
-  }
+  }, /*grain=*/1, Sharing::Balanced);
   tbb::parallel_for(std::size_t(0), chunks * lists, [&](std::size_t task) {
     const std::size_t l = task % lists, c = task / lists;
     requests[l].list->fill_chunk(c, chunk_used[l][c]);

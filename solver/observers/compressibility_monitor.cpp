@@ -1,5 +1,7 @@
 #include "observers/compressibility_monitor.hpp"
 
+#include "core/parallel.hpp"
+
 #include <cmath>
 
 namespace mrsph {
@@ -10,12 +12,12 @@ void update_compressibility_record(const Simulation& sim, CompressibilityRecord&
   const FluidParticles& f = fluid.particles;
   const Real rho0 = fluid.material.rho0();
   const Real c0 = fluid.material.sound_speed();
-  for (std::size_t i = 0; i < f.size(); ++i) {
-    const Real deviation = std::abs(f.rho[i] / rho0 - 1.0);
-    if (deviation > record.density_deviation.value) record.density_deviation = {deviation, sim.time, f.pos[i]};
-    const Real mach = f.vel[i].norm() / c0;
-    if (mach > record.mach.value) record.mach = {mach, sim.time, f.pos[i]};
-  }
+  const IndexedMax deviation =
+      parallel_indexed_max(f.size(), [&](std::size_t i) { return std::abs(f.rho[i] / rho0 - 1.0); });
+  if (deviation.value > record.density_deviation.value)
+    record.density_deviation = {deviation.value, sim.time, f.pos[deviation.index]};
+  const IndexedMax mach = parallel_indexed_max(f.size(), [&](std::size_t i) { return f.vel[i].norm() / c0; });
+  if (mach.value > record.mach.value) record.mach = {mach.value, sim.time, f.pos[mach.index]};
 }
 
 }  // namespace mrsph

@@ -246,13 +246,13 @@ void Simulation::build_pair_lists() {
     lists.push_back({&contacts_[walls_.size() + s].pairs, &solid_grids.back(), kernel, /*exclude_self=*/false});
   }
   build_lists(f.pos, lists);
-  for (std::size_t c = 0; c < contacts_.size(); ++c) {
+  parallel_for_each(contacts_.size(), [&](std::size_t c) {
     FluidContact& contact = contacts_[c];
     const std::size_t boundary_count = lists[c + 1].target->size();
     contact.pairs_of_boundary.build(contact.pairs, boundary_count);
     if (contact.boundary_dissipation_reaction.size() != boundary_count)
       contact.boundary_dissipation_reaction.assign(boundary_count, Vec2::Zero());
-  }
+  }, /*grain=*/1, Sharing::Balanced);
   if (fluid.options.refresh_pair_geometry) record_positions_at_list_build();
 }
 
@@ -276,21 +276,27 @@ std::string vec_text(const Vec2& v) {
 
 }  // namespace
 
+// Why fluid particle i marks a diverged run, if it does; the checks in the order they are reported.
+std::optional<std::string> Simulation::fluid_particle_fault(std::size_t i) const {
+  const FluidParticles& f = fluid_->particles;
+  const Real limit = limits.speed_factor * fluid_->material.sound_speed();
+  if (!f.pos[i].allFinite() || !f.vel[i].allFinite() || !std::isfinite(f.rho[i]))
+    return "non-finite position, velocity or density";
+  const Real speed = f.vel[i].norm();
+  if (speed > limit)
+    return "runaway speed |v| = " + std::to_string(speed) + " > " + std::to_string(limit) + " (" +
+           std::to_string(limits.speed_factor) + " c_F)";
+  if (!box_.contains(f.pos[i])) return "particle left the domain at " + vec_text(f.pos[i]);
+  if (!(f.rho[i] > 0.0)) return "non-positive density " + std::to_string(f.rho[i]);
+  return std::nullopt;
+}
+
 void Simulation::check_divergence() const {
   if (fluid_) {
-    const FluidParticles& f = fluid_->particles;
-    const Real limit = limits.speed_factor * fluid_->material.sound_speed();
-    for (std::size_t i = 0; i < f.size(); ++i) {
-      if (!f.pos[i].allFinite() || !f.vel[i].allFinite() || !std::isfinite(f.rho[i]))
-        diverged(*this, fluid_->name, i, "non-finite position, velocity or density");
-      const Real speed = f.vel[i].norm();
-      if (speed > limit)
-        diverged(*this, fluid_->name, i, "runaway speed |v| = " + std::to_string(speed) + " > " +
-                                             std::to_string(limit) + " (" + std::to_string(limits.speed_factor) + " c_F)");
-      if (!box_.contains(f.pos[i]))
-        diverged(*this, fluid_->name, i, "particle left the domain at " + vec_text(f.pos[i]));
-      if (!(f.rho[i] > 0.0)) diverged(*this, fluid_->name, i, "non-positive density " + std::to_string(f.rho[i]));
-    }
+    // The first faulty particle, as a serial scan would report it.
+    const std::size_t n = fluid_->particles.size();
+    const std::size_t i = parallel_find_first(n, [&](std::size_t k) { return fluid_particle_fault(k).has_value(); });
+    if (i < n) diverged(*this, fluid_->name, i, *fluid_particle_fault(i));
   }
   for (const SolidBody& solid : solids_) {
     const SolidParticles& s = solid.particles;

@@ -100,6 +100,8 @@ class Simulation {
   std::size_t particle_count() const;
 
  private:
+  std::optional<std::string> fluid_particle_fault(std::size_t i) const;
+
   DomainBox box_;
   std::optional<FluidBody> fluid_;
   std::vector<WallBody> walls_;
