@@ -33,4 +33,15 @@ inline SplitStep full_step_towards(Real elapsed, Real Dt, Real limit, Real crite
   return {size, elapsed + size >= Dt * (1.0 - 1e-12)};
 }
 
+// Full acoustic steps that stay inside the advection step Dt: the step is the criterion (at most
+// what remains of Dt), and the last is the one after which another of its size would pass Dt; so
+// the advection step ends at or before Dt, and neither criterion is exceeded
+// (reports/performance.md sections 3 and 19). An advection step cut to reach `limit` (an output
+// time or the end) is split equally instead, so that it lands on the limit.
+inline SplitStep full_step_inside(Real elapsed, Real Dt, Real limit, Real criterion) {
+  if (limit <= Dt * (1.0 + 1e-12)) return split_remaining(limit - elapsed, criterion);
+  const Real size = std::min(criterion, Dt - elapsed);
+  return {size, elapsed + 2.0 * size > Dt * (1.0 + 1e-12)};
+}
+
 }  // namespace mrsph

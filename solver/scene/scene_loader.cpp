@@ -193,7 +193,7 @@ void read_driving(const SceneNode& root, Simulation& sim) {
 
 std::unique_ptr<Schedule> read_schedule(const SceneNode& root, Simulation& sim) {
   std::string schedule_name = "multi_step_position_verlet";
-  bool full_acoustic_steps = false;  // true: the paper's Algorithm 1 (performance.md section 13)
+  AcousticSteps acoustic_steps = AcousticSteps::EqualSplit;  // performance.md sections 3, 13 and 19
   if (const auto node = root.optional_child("schedule")) {
     schedule_name = node->choice_or(
         "type", {"multi_step_position_verlet", "single_step_position_verlet", "multi_step_velocity_verlet"}, schedule_name);
@@ -202,17 +202,20 @@ std::unique_ptr<Schedule> read_schedule(const SceneNode& root, Simulation& sim) 
     sim.solid_kinematics = kinematics == "instantaneous"                ? SolidKinematics::Instantaneous
                            : kinematics == "averaged_second_difference" ? SolidKinematics::AveragedSecondDifference
                                                                         : SolidKinematics::Averaged;
-    full_acoustic_steps =
-        node->choice_or("acoustic_steps", {"equal_split", "full_steps"}, "equal_split") == "full_steps";
-    if (full_acoustic_steps && schedule_name == "multi_step_velocity_verlet")
-      node->fail("acoustic_steps", "full_steps is an option of the position-based Verlet schedules; "
+    const std::string steps =
+        node->choice_or("acoustic_steps", {"equal_split", "full_steps", "full_steps_inside"}, "equal_split");
+    acoustic_steps = steps == "full_steps"          ? AcousticSteps::FullSteps
+                     : steps == "full_steps_inside" ? AcousticSteps::FullStepsInside
+                                                    : AcousticSteps::EqualSplit;
+    if (acoustic_steps != AcousticSteps::EqualSplit && schedule_name == "multi_step_velocity_verlet")
+      node->fail("acoustic_steps", steps + " is an option of the position-based Verlet schedules; "
                                    "expected equal_split with multi_step_velocity_verlet");
     node->finish();
   }
   if (schedule_name == "multi_step_velocity_verlet" && !sim.solid_contacts.empty())
     root.fail("solid_contacts", "solid contacts are integrated by the position-based Verlet schedules only; "
                                 "choose multi_step_position_verlet or single_step_position_verlet");
-  return make_schedule(schedule_name, full_acoustic_steps);
+  return make_schedule(schedule_name, acoustic_steps);
 }
 
 // Divergence limits, end time and output intervals.

@@ -64,8 +64,10 @@ Real PositionVerletSchedule::advance(Simulation& sim, Real max_step) {
     Real criterion = acoustic_time_step(fluid);
     if (single_step_)
       for (const SolidBody& solid : sim.solids()) criterion = std::min(criterion, solid_time_step(solid));
-    const SplitStep step = full_acoustic_steps_ ? full_step_towards(elapsed, Dt, max_step, criterion)
-                                                : split_remaining(Dt - elapsed, criterion);
+    const SplitStep step = acoustic_steps_ == AcousticSteps::FullSteps ? full_step_towards(elapsed, Dt, max_step, criterion)
+                           : acoustic_steps_ == AcousticSteps::FullStepsInside
+                               ? full_step_inside(elapsed, Dt, max_step, criterion)
+                               : split_remaining(Dt - elapsed, criterion);
     const Real dt = step.size;
     last = step.last;
 
@@ -85,9 +87,10 @@ Real PositionVerletSchedule::advance(Simulation& sim, Real max_step) {
                        [&] { sim.steps.solid += integrate_solids_over(sim, sim.time, dt); });
     for (SolidBody& solid : sim.solids()) end_kinematics_average(solid.particles, dt, sim.solid_kinematics);
     // The equal split ends on Dt exactly; full steps where they end, or on max_step exactly.
-    const bool on_limit = full_acoustic_steps_ && dt == max_step - elapsed;
+    const bool full_steps = acoustic_steps_ != AcousticSteps::EqualSplit;
+    const bool on_limit = full_steps && dt == max_step - elapsed;
     elapsed += dt;
-    if (last) step_length = full_acoustic_steps_ ? (on_limit ? max_step : elapsed) : Dt;
+    if (last) step_length = full_steps ? (on_limit ? max_step : elapsed) : Dt;
     sim.time = last ? t0 + step_length : t0 + elapsed;
     sim.impose_boundary_states(dt);
     ++sim.steps.acoustic;

@@ -7,10 +7,8 @@ namespace mrsph {
 
 class PositionVerletSchedule final : public Schedule {
  public:
-  // full_acoustic_steps: the paper's Algorithm 1 (full acoustic steps, the last passing the
-  // advection step: core/step_splitting.hpp); else the advection step split into equal acoustic steps.
-  explicit PositionVerletSchedule(bool single_step, bool full_acoustic_steps = false)
-      : single_step_(single_step), full_acoustic_steps_(full_acoustic_steps) {}
+  explicit PositionVerletSchedule(bool single_step, AcousticSteps acoustic_steps = AcousticSteps::EqualSplit)
+      : single_step_(single_step), acoustic_steps_(acoustic_steps) {}
   std::string name() const override {
     return single_step_ ? "single_step_position_verlet" : "multi_step_position_verlet";
   }
@@ -19,7 +17,7 @@ class PositionVerletSchedule final : public Schedule {
  private:
   Real advance_solids_only(Simulation& sim, Real max_step);
   bool single_step_;
-  bool full_acoustic_steps_;
+  AcousticSteps acoustic_steps_;
 };
 
 // Integrates a solid over [t, t + dt] in sub-steps that respect its criterion and sum to dt

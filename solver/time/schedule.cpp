@@ -13,9 +13,9 @@ const std::vector<std::string>& schedule_names() {
   return names;
 }
 
-std::unique_ptr<Schedule> make_schedule(const std::string& name, bool full_acoustic_steps) {
-  if (name == "multi_step_position_verlet") return std::make_unique<PositionVerletSchedule>(false, full_acoustic_steps);
-  if (name == "single_step_position_verlet") return std::make_unique<PositionVerletSchedule>(true, full_acoustic_steps);
+std::unique_ptr<Schedule> make_schedule(const std::string& name, AcousticSteps acoustic_steps) {
+  if (name == "multi_step_position_verlet") return std::make_unique<PositionVerletSchedule>(false, acoustic_steps);
+  if (name == "single_step_position_verlet") return std::make_unique<PositionVerletSchedule>(true, acoustic_steps);
   if (name == "multi_step_velocity_verlet") return std::make_unique<VelocityVerletSchedule>();
   std::string known;
   for (const auto& n : schedule_names()) known += (known.empty() ? "\"" : ", \"") + n + "\"";

@@ -23,9 +23,16 @@ class Schedule {
   virtual Real advance(Simulation& sim, Real max_step) = 0;
 };
 
-// full_acoustic_steps: the position-based schedules' acoustic steps as the paper's Algorithm 1
-// (position_verlet_schedule.hpp). Throws std::invalid_argument.
-std::unique_ptr<Schedule> make_schedule(const std::string& name, bool full_acoustic_steps = false);
+// How the position-based schedules fill an advection step Dt with acoustic steps (dt_ac: the
+// acoustic criterion, re-evaluated at every acoustic step; core/step_splitting.hpp).
+enum class AcousticSteps {
+  EqualSplit,       // ceil(Dt / dt_ac) equal steps that end on Dt
+  FullSteps,        // the paper's Algorithm 1: full steps, the last passing Dt by less than one
+  FullStepsInside   // full steps while the next one fits: the advection step ends at or before Dt
+};
+
+// Throws std::invalid_argument.
+std::unique_ptr<Schedule> make_schedule(const std::string& name, AcousticSteps acoustic_steps = AcousticSteps::EqualSplit);
 const std::vector<std::string>& schedule_names();
 
 }  // namespace mrsph
