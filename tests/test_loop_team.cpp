@@ -60,7 +60,6 @@ TEST_CASE("A loop team does not wait for a helper that cannot come", "[parallel]
   });
 }
 
-
 TEST_CASE("Parallel searches find what a serial scan finds, on any number of threads", "[parallel]") {
   // 10000 values with ties and NaNs: the first index holding the largest value (NaN skipped), and the
   // first index meeting a condition, as a serial scan from index 0 finds them.

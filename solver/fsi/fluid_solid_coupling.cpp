@@ -3,6 +3,8 @@
 #include "core/parallel.hpp"
 #include "interaction/pair_sweep.hpp"
 
+#include <algorithm>
+
 namespace mrsph {
 
 void set_force_from_fluid(const FluidContact& contact, SolidParticles& solid) {
@@ -40,6 +42,8 @@ void clear_boundary_impulses(std::vector<FluidContact>& contacts) {
 }
 
 void add_boundary_impulses(std::vector<FluidContact>& contacts, Real dt) {
+  if (std::none_of(contacts.begin(), contacts.end(), [](const FluidContact& c) { return c.records_impulse; }))
+    return;  // no force observer: nothing to sum, no tasks to start
   // Each contact's total and viscous force are serial sums over its pairs (their bits do not depend
   // on the thread count); the sums of all contacts run side by side.
   Vec2Array force(2 * contacts.size(), Vec2::Zero());
