@@ -22,8 +22,10 @@ if benchmarks:
     for col, name in enumerate(benchmarks):
         runs = [r for r in cylinder if r["config"]["benchmark"] == name]
         ref = refs.get(name, {})
+        # CFD3's amplitude: the lift's shedding component (summaries before it: the smoothed lift's percentiles).
+        shedding = "lift_shedding_amplitude" if any("lift_shedding_amplitude" in r["metrics"] for r in runs) else "lift_amplitude"
         for row, (metric, ref_key) in enumerate([("drag_mean", "drag_mean" if name == "CFD3" else "drag"),
-                                                 ("lift_amplitude" if name == "CFD3" else "lift_mean",
+                                                 (shedding if name == "CFD3" else "lift_mean",
                                                   "lift_amplitude" if name == "CFD3" else "lift")]):
             ax = axes[row][col]
             factors = sorted({round(r["config"]["sound_speed"]) for r in runs})
@@ -48,7 +50,7 @@ if cfd3:
         if not os.path.exists(path):
             continue
         d = read_csv(path)
-        ax.plot(d["time"], d["fy"], lw=0.5, label=r["case"] + f", St {value(r, 'strouhal'):.3f}")
+        ax.plot(d["time"], d["fy"], lw=0.5, label=r["case"] + f", shedding St {value(r, 'strouhal_shedding'):.3f}, amplitude {value(r, 'lift_shedding_amplitude'):.2f}")
     ax.set_xlabel("t U0 / D")
     ax.set_ylabel("lift / (rho U0^2 D)")
     ax.set_title(f"CFD3 (Turek & Hron: St {refs.get('CFD3', {}).get('strouhal', math.nan):.4f}, "

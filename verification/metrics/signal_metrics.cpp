@@ -131,6 +131,56 @@ std::optional<double> spectral_peak_frequency(const std::vector<double>& t, cons
   return best_f;
 }
 
+namespace {
+
+// The signal's in-band discrete Fourier components, synthesised on the same samples.
+std::vector<double> keep_band(const std::vector<double>& s, double span, double f_lo, double f_hi) {
+  const std::size_t n = s.size();
+  std::vector<double> out(n, 0.0);
+  const auto m_lo = static_cast<std::size_t>(std::max(1.0, std::ceil(f_lo * span)));
+  const auto m_hi = std::min(static_cast<std::size_t>(std::floor(f_hi * span)), (n - 1) / 2);
+  for (std::size_t mode = m_lo; mode <= m_hi; ++mode) {
+    double re = 0.0, im = 0.0;
+    const double w = 2.0 * M_PI * static_cast<double>(mode) / static_cast<double>(n);
+    for (std::size_t k = 0; k < n; ++k) {
+      re += s[k] * std::cos(w * static_cast<double>(k));
+      im += s[k] * std::sin(w * static_cast<double>(k));
+    }
+    // A real signal's pair of bins +-m: (2 / n) (re cos + im sin).
+    for (std::size_t k = 0; k < n; ++k)
+      out[k] += 2.0 / static_cast<double>(n) * (re * std::cos(w * static_cast<double>(k)) + im * std::sin(w * static_cast<double>(k)));
+  }
+  return out;
+}
+
+}  // namespace
+
+std::optional<UniformSignal> band_pass(const std::vector<double>& t, const std::vector<double>& y, double settle_time,
+                                       double f_lo, double f_hi, double taper, std::size_t samples) {
+  const std::size_t first = static_cast<std::size_t>(std::lower_bound(t.begin(), t.end(), settle_time) - t.begin());
+  if (t.size() < first + 16 || samples < 16 || !(taper >= 0.0 && taper < 0.5)) return std::nullopt;
+  const double t0 = t[first], span = t.back() - t0;
+  if (!(span > 0.0) || span * f_lo < 1.0) return std::nullopt;
+  // Samples at t0 + k span / n, k < n: the discrete transform's frequencies are then m / span.
+  const std::size_t n = samples, edge = static_cast<std::size_t>(taper * static_cast<double>(n));
+  const double dt = span / static_cast<double>(n);
+  std::vector<double> s(n);
+  for (std::size_t k = 0; k < n; ++k) s[k] = interpolate(t, y, t0 + static_cast<double>(k) * dt);
+  const double m = mean_of(s);
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::size_t from_end = std::min(k, n - 1 - k);
+    const double w = from_end < edge ? 0.5 * (1.0 - std::cos(M_PI * static_cast<double>(from_end) / static_cast<double>(edge))) : 1.0;
+    s[k] = w * (s[k] - m);
+  }
+  const std::vector<double> band = keep_band(s, span, f_lo, f_hi);
+  UniformSignal out;
+  for (std::size_t k = edge; k + edge < n; ++k) {
+    out.t.push_back(t0 + static_cast<double>(k) * dt);
+    out.y.push_back(band[k]);
+  }
+  return out;
+}
+
 std::optional<SwitchingPeriod> switching_period(const std::vector<double>& t, const std::vector<double>& y,
                                                 double settle_time, double band) {
   if (t.size() != y.size()) throw std::invalid_argument("switching_period: t and y differ in length");
