@@ -45,11 +45,12 @@ WindowStats window_stats(const ObserverSeries& s, std::size_t column, double sta
 
 namespace {
 
-// The lift's shedding component: the lift band-passed to St = 0.1-0.35 (a cylinder's wake sheds at
-// St 0.18-0.25 from Re = 100 on, Roshko 1954; the band leaves out the drag's line at twice that, the
-// channel's acoustic modes and the particle noise, all of which the switching count and the
-// percentiles of the smoothed lift take in), its cycles' mean half peak-to-peak, their spread and
-// count, and their frequency (reports/pressure.md section 26).
+// The lift's shedding component: the lift band-passed to St = 0.1-0.35 (a free cylinder's wake sheds
+// at St = 0.212 (1 - 21.2 / Re), Roshko 1954: 0.17-0.19 at Re = 100-200; the confined benchmark at
+// 0.22. The band leaves out CFD3's drag line at twice that, 0.44, the channel's acoustic modes and the
+// particle noise, all of which the switching count and the percentiles of the smoothed lift take in),
+// its cycles' mean half peak-to-peak, their spread and count, and their frequency (reports/pressure.md
+// section 26).
 void add_shedding_component(const std::vector<double>& t, const std::vector<double>& lift, double window_start, Json& metrics) {
   constexpr double kLowest = 0.1, kHighest = 0.35;
   const auto band = band_pass(t, lift, window_start, kLowest, kHighest);
