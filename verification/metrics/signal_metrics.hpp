@@ -36,7 +36,7 @@ std::optional<double> spectral_peak_frequency(const std::vector<double>& t, cons
 // into it), and only the discrete Fourier components whose frequencies k / span lie in the band kept
 // (the rest of the spectrum: noise, harmonics, slow drift). Returned over the untapered middle only.
 // A sinusoid in the band comes back with its amplitude (within 1 % over 9 periods, taper 0.15); of a
-// line 3.6 / span outside the band 4 % leaks in (30 % without the taper, 3 % with 0.2, which keeps
+// line 3.6 / span outside the band 4 % leaks in (28-36 % without the taper, 3 % with 0.2, which keeps
 // only 60 % of the window). Its cycles (oscillation_stats) give the amplitude of a periodic component
 // per cycle, with its spread.
 // Nothing if the window holds fewer than 16 samples or less than one period of f_lo.
