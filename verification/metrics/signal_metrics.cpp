@@ -93,6 +93,24 @@ std::optional<OscillationStats> oscillation_stats(const std::vector<double>& t, 
   return stats;
 }
 
+namespace {
+
+// The Fourier sums of uniform samples s_k at angular frequency w per sample: sum s_k cos(w k) and
+// sum s_k sin(w k).
+struct FourierSums {
+  double cos_sum = 0.0, sin_sum = 0.0;
+};
+FourierSums fourier_sums(const std::vector<double>& s, double w) {
+  FourierSums out;
+  for (std::size_t k = 0; k < s.size(); ++k) {
+    out.cos_sum += s[k] * std::cos(w * static_cast<double>(k));
+    out.sin_sum += s[k] * std::sin(w * static_cast<double>(k));
+  }
+  return out;
+}
+
+}  // namespace
+
 std::optional<double> spectral_peak_frequency(const std::vector<double>& t, const std::vector<double>& y,
                                               double settle_time, double f_min, double f_max) {
   const std::size_t first = static_cast<std::size_t>(std::lower_bound(t.begin(), t.end(), settle_time) - t.begin());
@@ -110,13 +128,8 @@ std::optional<double> spectral_peak_frequency(const std::vector<double>& t, cons
   double best_f = f_min, best_p = -1.0, prev = 0.0, next = 0.0;
   std::vector<double> power;
   for (double f = f_min; f <= f_max; f += df) {
-    double re = 0.0, im = 0.0;
-    for (std::size_t k = 0; k < n; ++k) {
-      const double phase = 2.0 * M_PI * f * k * dt;
-      re += s[k] * std::cos(phase);
-      im -= s[k] * std::sin(phase);
-    }
-    power.push_back(re * re + im * im);
+    const FourierSums sums = fourier_sums(s, 2.0 * M_PI * f * dt);
+    power.push_back(sums.cos_sum * sums.cos_sum + sums.sin_sum * sums.sin_sum);
   }
   std::size_t kbest = 0;
   for (std::size_t k = 0; k < power.size(); ++k)
@@ -140,15 +153,12 @@ std::vector<double> keep_band(const std::vector<double>& s, double span, double 
   const auto m_lo = static_cast<std::size_t>(std::max(1.0, std::ceil(f_lo * span)));
   const auto m_hi = std::min(static_cast<std::size_t>(std::floor(f_hi * span)), (n - 1) / 2);
   for (std::size_t mode = m_lo; mode <= m_hi; ++mode) {
-    double re = 0.0, im = 0.0;
     const double w = 2.0 * M_PI * static_cast<double>(mode) / static_cast<double>(n);
-    for (std::size_t k = 0; k < n; ++k) {
-      re += s[k] * std::cos(w * static_cast<double>(k));
-      im += s[k] * std::sin(w * static_cast<double>(k));
-    }
-    // A real signal's pair of bins +-m: (2 / n) (re cos + im sin).
+    const FourierSums sums = fourier_sums(s, w);
+    // A real signal's pair of bins +-m: (2 / n) (cos_sum cos + sin_sum sin).
     for (std::size_t k = 0; k < n; ++k)
-      out[k] += 2.0 / static_cast<double>(n) * (re * std::cos(w * static_cast<double>(k)) + im * std::sin(w * static_cast<double>(k)));
+      out[k] += 2.0 / static_cast<double>(n) *
+                (sums.cos_sum * std::cos(w * static_cast<double>(k)) + sums.sin_sum * std::sin(w * static_cast<double>(k)));
   }
   return out;
 }
