@@ -16,6 +16,9 @@ CellGrid::CellGrid(const DomainBox& box, Real search_radius) : box_(box), search
   for (int a = 0; a < 2; ++a) {
     if (!box_.periodic[a]) continue;
     const Real L = box_.length(a);
+    if (!(L / search_radius <= kMaxPeriodicCells))
+      throw std::invalid_argument("periodic length " + std::to_string(L) + " along axis " + std::to_string(a) +
+                                  " is more than " + std::to_string(kMaxPeriodicCells) + " search radii");
     const int n = static_cast<int>(std::floor(L / search_radius));
     // Three distinct cells are needed so that the 3x3 stencil never visits a cell twice.
     if (n < 3)

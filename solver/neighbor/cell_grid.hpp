@@ -14,6 +14,10 @@ namespace mrsph {
 
 class CellGrid {
  public:
+  // The most cells along a periodic axis: far above any scene's (2e7 particles at most), and within
+  // the int that indexes the cells.
+  static constexpr Real kMaxPeriodicCells = 1.0e7;
+
   CellGrid(const DomainBox& box, Real search_radius);
 
   void build(const Vec2Array& positions);

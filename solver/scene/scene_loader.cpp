@@ -1,6 +1,7 @@
 #include "scene/scene_loader.hpp"
 
 #include "boundary/initial_velocity.hpp"
+#include "neighbor/cell_grid.hpp"
 #include "scene/body_reader.hpp"
 #include "scene/open_boundary_reader.hpp"
 
@@ -138,7 +139,8 @@ void read_bodies(const SceneNode& root, Simulation& sim, const DomainBox& box, d
   for (const SceneNode& node : root.children("solid_contacts")) sim.solid_contacts.push_back(read_solid_contact(node, sim));
 }
 
-// A periodic axis must hold three kernel supports, or the cell list would see a particle twice.
+// A periodic axis must hold three kernel supports, or the cell list would see a particle twice, and
+// at most CellGrid::kMaxPeriodicCells of them, or its cell count would not fit the grid's index.
 void check_periodic_reach(const SceneNode& root, const Simulation& sim, const DomainBox& box) {
   Real reach = 0.0;
   if (sim.has_fluid()) reach = sim.fluid().kernel.cutoff();
@@ -149,6 +151,11 @@ void check_periodic_reach(const SceneNode& root, const Simulation& sim, const Do
       root.fail("domain", fmt::format("the periodic length along {} is {:g}, but it must be at least three kernel supports "
                                       "(3 x {:g} = {:g}): lengthen the domain or refine the particles",
                                       a == 0 ? "x" : "y", box.length(a), reach, 3.0 * reach));
+  for (int a = 0; a < 2; ++a)
+    if (box.periodic[a] && reach > 0.0 && !(box.length(a) / reach <= CellGrid::kMaxPeriodicCells))
+      root.fail("domain", fmt::format("the periodic length along {} is {:g}, which is more than {:g} kernel supports "
+                                      "({:g}): the cell list cannot divide it; shorten the domain",
+                                      a == 0 ? "x" : "y", box.length(a), CellGrid::kMaxPeriodicCells, reach));
 }
 
 // Names must be unique: observers and reports refer to bodies by name.
