@@ -146,16 +146,18 @@ void check_periodic_reach(const SceneNode& root, const Simulation& sim, const Do
   if (sim.has_fluid()) reach = sim.fluid().kernel.cutoff();
   for (const auto& w : sim.walls()) reach = std::max(reach, w.kernel.cutoff());
   for (const auto& s : sim.solids()) reach = std::max(reach, s.kernel.cutoff());
-  for (int a = 0; a < 2; ++a)
-    if (box.periodic[a] && box.length(a) < 3.0 * reach)
+  for (int a = 0; a < 2; ++a) {
+    if (!box.periodic[a]) continue;
+    const char* axis = a == 0 ? "x" : "y";
+    if (box.length(a) < 3.0 * reach)
       root.fail("domain", fmt::format("the periodic length along {} is {:g}, but it must be at least three kernel supports "
                                       "(3 x {:g} = {:g}): lengthen the domain or refine the particles",
-                                      a == 0 ? "x" : "y", box.length(a), reach, 3.0 * reach));
-  for (int a = 0; a < 2; ++a)
-    if (box.periodic[a] && reach > 0.0 && !(box.length(a) / reach <= CellGrid::kMaxPeriodicCells))
+                                      axis, box.length(a), reach, 3.0 * reach));
+    if (reach > 0.0 && !(box.length(a) / reach <= CellGrid::kMaxPeriodicCells))
       root.fail("domain", fmt::format("the periodic length along {} is {:g}, which is more than {:g} kernel supports "
                                       "({:g}): the cell list cannot divide it; shorten the domain",
-                                      a == 0 ? "x" : "y", box.length(a), CellGrid::kMaxPeriodicCells, reach));
+                                      axis, box.length(a), CellGrid::kMaxPeriodicCells, reach));
+  }
 }
 
 // Names must be unique: observers and reports refer to bodies by name.
