@@ -110,16 +110,21 @@ if submerged:
 decay_path = os.path.join(directory, "taylor_green_decay.csv")
 if os.path.exists(decay_path):
     d = read_csv(decay_path)
-    fig, axes = plt.subplots(1, 3, figsize=(13, 3.8))
-    keys = sorted(set(zip(d["resolution"], d["sound_speed_factor"])))
-    for res, c in keys:
-        sel = [k for k in range(len(d["time"])) if d["resolution"][k] == res and d["sound_speed_factor"][k] == c]
+    # Older summaries lack the Reynolds number (all Re = 100) and the mode's amplitude.
+    reynolds = d.get("Re", [100.0] * len(d["time"]))
+    columns = ["velocity_l2", "energy_ratio", "pressure_l2"] + (["mode_amplitude_over_viscous"] if "mode_amplitude_over_viscous" in d else [])
+    titles = ["velocity L2 error", "kinetic energy / analytic", "pressure L2 error",
+              "vortex amplitude / viscous decay exp(-2 nu k^2 t)"]
+    fig, axes = plt.subplots(1, len(columns), figsize=(4.3 * len(columns), 3.8))
+    keys = sorted(set(zip(reynolds, d["resolution"], d["sound_speed_factor"])))
+    for re_, res, c in keys:
+        sel = [k for k in range(len(d["time"])) if (reynolds[k], d["resolution"][k], d["sound_speed_factor"][k]) == (re_, res, c)]
         t = [d["time"][k] for k in sel]
-        for ax, col in zip(axes, ["velocity_l2", "energy_ratio", "pressure_l2"]):
-            ax.plot(t, [d[col][k] for k in sel], "o-", ms=3, label=f"L/dp = {res:g}, c = {c:g} U")
-    for ax, label in zip(axes, ["velocity L2 error", "kinetic energy / analytic", "pressure L2 error"]):
+        for ax, col in zip(axes, columns):
+            ax.plot(t, [d[col][k] for k in sel], "o-", ms=3, label=f"Re = {re_:g}, L/dp = {res:g}, c = {c:g} U")
+    for ax, label in zip(axes, titles):
         ax.set_xlabel("t U / L")
-        ax.set_title(label)
+        ax.set_title(label, fontsize=9)
     axes[2].set_yscale("log")
-    axes[0].legend(fontsize=7)
+    axes[0].legend(fontsize=6)
     save(fig, directory, "pressure_taylor_green.png")

@@ -130,3 +130,12 @@ TEST_CASE("Three-grid convergence recovers order, limit and GCI of a power law",
   CHECK(c->gci == Approx(1.25 * std::abs((f(1) - f(2)) / f(1)) / 3.0).epsilon(1e-12));
   CHECK(order_from_errors(0.04, 0.01, 2.0) == Approx(2.0));
 }
+
+TEST_CASE("The least-squares slope of a noisy line, and none from one point", "[metrics]") {
+  // ln A of a decaying vortex: -2 nu k^2 t with an offset and an alternating error of 1e-3.
+  std::vector<double> t, y;
+  for (int k = 1; k <= 8; ++k) { t.push_back(0.125 * k); y.push_back(-0.3948 * t.back() - 0.02 + (k % 2 ? 1e-3 : -1e-3)); }
+  CHECK(least_squares_slope(t, y) == Approx(-0.3948).epsilon(1e-2));
+  CHECK(std::isnan(least_squares_slope({1.0}, {2.0})));
+  CHECK(std::isnan(least_squares_slope({1.0, 1.0}, {2.0, 3.0})));
+}

@@ -1,6 +1,7 @@
 #include "metrics/signal_metrics.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <cmath>
 #include <numeric>
 #include <stdexcept>
@@ -15,6 +16,15 @@ double interpolate(const std::vector<double>& t, const std::vector<double>& y, d
   const std::size_t k = static_cast<std::size_t>(it - t.begin());
   const double w = (s - t[k - 1]) / (t[k] - t[k - 1]);
   return (1.0 - w) * y[k - 1] + w * y[k];
+}
+
+double least_squares_slope(const std::vector<double>& x, const std::vector<double>& y) {
+  const std::size_t n = std::min(x.size(), y.size());
+  double sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
+  for (std::size_t k = 0; k < n; ++k) sx += x[k], sy += y[k], sxx += x[k] * x[k], sxy += x[k] * y[k];
+  const double denominator = static_cast<double>(n) * sxx - sx * sx;
+  if (n < 2 || denominator == 0.0) return std::numeric_limits<double>::quiet_NaN();
+  return (static_cast<double>(n) * sxy - sx * sy) / denominator;
 }
 
 std::vector<double> moving_average(const std::vector<double>& t, const std::vector<double>& y, double window) {

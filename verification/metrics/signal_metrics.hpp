@@ -81,4 +81,8 @@ std::vector<double> moving_average(const std::vector<double>& t, const std::vect
 // Linear interpolation of (t, y) at time s (clamped to the ends). t must be increasing.
 double interpolate(const std::vector<double>& t, const std::vector<double>& y, double s);
 
+// The least-squares slope of y against x (the straight line's); NaN with fewer than two points or
+// all x equal.
+double least_squares_slope(const std::vector<double>& x, const std::vector<double>& y);
+
 }  // namespace mrsph::verification

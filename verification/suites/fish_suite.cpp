@@ -140,10 +140,7 @@ void measure_travelling_wave(const CsvTable& centre, Json& m) {
     }
     if (x0s.size() > 2) {
       // Least-squares slope of phase against position: the wave number along the body.
-      double sx = 0, sp = 0, sxx = 0, sxp = 0;
-      const double n = x0s.size();
-      for (std::size_t k = 0; k < x0s.size(); ++k) { sx += x0s[k]; sp += phases[k]; sxx += x0s[k] * x0s[k]; sxp += x0s[k] * phases[k]; }
-      m["centre_line_phase_slope"] = (n * sxp - sx * sp) / (n * sxx - sx * sx);
+      m["centre_line_phase_slope"] = least_squares_slope(x0s, phases);
       m["centre_line_phase_range"] = phases.back() - phases.front();
     }
   }
