@@ -1,8 +1,8 @@
 #include "metrics/signal_metrics.hpp"
 
 #include <algorithm>
-#include <limits>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <stdexcept>
 

@@ -117,8 +117,7 @@ struct VortexCase {
   int resolution, factor, reynolds = 100;
 };
 
-struct VortexRun {
-  int resolution = 0, factor = 0, reynolds = 100;
+struct VortexRun : VortexCase {
   SuiteRun record;
 };
 
@@ -232,12 +231,8 @@ void run_taylor_green(const SuiteContext& ctx, SuiteSummary& summary) {
   const std::vector<VortexCase> plan =
       ctx.quick ? std::vector<VortexCase>{{50, 10}, {50, 20}, {50, 40}, {20, 10, 200}, {20, 20, 200}, {20, 40, 200}}
                 : std::vector<VortexCase>{{50, 10}, {100, 10}, {200, 10}, {100, 20}, {100, 40}, {40, 10, 200}, {40, 20, 200}, {40, 40, 200}};
-  std::vector<VortexRun> runs(plan.size());
-  for (std::size_t k = 0; k < plan.size(); ++k) {
-    runs[k].resolution = plan[k].resolution;
-    runs[k].factor = plan[k].factor;
-    runs[k].reynolds = plan[k].reynolds;
-  }
+  std::vector<VortexRun> runs;
+  for (const VortexCase& c : plan) runs.push_back(VortexRun{c, {}});
   CsvTable decay;
   decay.columns = {"Re", "resolution", "sound_speed_factor", "time", "velocity_l2", "energy_ratio", "pressure_l2",
                    "mode_amplitude_over_viscous"};
@@ -249,6 +244,8 @@ void run_taylor_green(const SuiteContext& ctx, SuiteSummary& summary) {
       // The vortex decays by its viscosity: nu_eff within 5 % of nu, at the paper's c = 10 U (quick
       // and full) and at every c in full mode (the incompressible limit must not add dissipation;
       // section 27 measured 0.96 / 1.00 / 1.17 at c = 10 / 20 / 40 U, L/dp = 40: c = 40 U fails).
+      // 5 %: CFD3's wake at this Re lost two thirds of its shedding (1.15 -> 0.36) when a density
+      // rule raised nu_eff by 13 % (section 27); a few per cent is what its results can bear.
       if (r.factor == 10 || !ctx.quick)
         check_relative_or_missing(summary, fmt::format("{}: effective viscosity / viscosity", r.record.case_name),
                                   run_metric(r.record, "effective_viscosity_ratio"), 1.0, 0.05, source);
