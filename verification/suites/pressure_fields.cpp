@@ -243,7 +243,8 @@ void run_taylor_green(const SuiteContext& ctx, SuiteSummary& summary) {
     if (r.reynolds != 100) {
       // The vortex decays by its viscosity: nu_eff within 5 % of nu, at the paper's c = 10 U (quick
       // and full) and at every c in full mode (the incompressible limit must not add dissipation;
-      // section 27 measured 0.96 / 1.00 / 1.17 at c = 10 / 20 / 40 U, L/dp = 40: c = 40 U fails).
+      // section 27's runs give 0.94 / 0.99 / 1.27 at c = 10 / 20 / 40 U, L/dp = 40, over this window:
+      // c = 10 and 40 U fail in full mode, the summation's reset feeding and draining the vortex).
       // 5 %: CFD3's wake at this Re lost two thirds of its shedding (1.15 -> 0.36) when a density
       // rule raised nu_eff by 13 % (section 27); a few per cent is what its results can bear.
       if (r.factor == 10 || !ctx.quick)
