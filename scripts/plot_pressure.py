@@ -1,4 +1,5 @@
-"""Figures of the pressure suite: drag and lift of the cylinder benchmarks against Turek & Hron over
+"""Figures of the pressure suite: drag and lift of the cylinder benchmarks against Turek & Hron and
+Schaefer & Turek over
 resolution and sound speed, the CFD3 lift history, the still tank's pressure profile, the submerged
 cylinder's buoyancy over time, and the Taylor-Green vortex's errors over time."""
 import math
@@ -16,27 +17,45 @@ def value(run, name):
     return run["metrics"].get(name, math.nan) if not run["diverged"] else math.nan
 
 
+st_refs = summary.get("schaefer_turek_reference", {})
+
+
+def panels(name, runs):
+    """(metric, reference: a value, a (low, high) band or None, the reference's label) for the two rows."""
+    if name in st_refs:  # Schaefer & Turek: coefficients 2 F / (rho U^2 D), halved to the scene's F / (rho U^2 D)
+        ref, label = st_refs[name], "Schaefer & Turek 1996"
+        if name == "2D-1":
+            return [("drag_mean", ref["drag_coefficient"] / 2, label),
+                    ("pressure_difference_mean", ref["pressure_difference_Pa"] / ref["rho_U2_Pa"], label)]
+        return [("drag_mean", None, label),
+                ("lift_shedding_amplitude", tuple(v / 2 for v in ref["lift_coefficient_max_bounds"]), label + " (c_L,max / 2)")]
+    ref, label = refs.get(name, {}), "Turek & Hron 2006"
+    if name == "CFD3":
+        # CFD3's amplitude: the lift's shedding component (summaries before it: the smoothed lift's percentiles).
+        shedding = "lift_shedding_amplitude" if any("lift_shedding_amplitude" in r["metrics"] for r in runs) else "lift_amplitude"
+        return [("drag_mean", ref.get("drag_mean"), label), (shedding, ref.get("lift_amplitude"), label)]
+    return [("drag_mean", ref.get("drag"), label), ("lift_mean", ref.get("lift"), label)]
+
+
 benchmarks = sorted({r["config"]["benchmark"] for r in cylinder})
 if benchmarks:
     fig, axes = plt.subplots(2, len(benchmarks), figsize=(4.2 * len(benchmarks), 6.5), squeeze=False)
     for col, name in enumerate(benchmarks):
         runs = [r for r in cylinder if r["config"]["benchmark"] == name]
-        ref = refs.get(name, {})
-        # CFD3's amplitude: the lift's shedding component (summaries before it: the smoothed lift's percentiles).
-        shedding = "lift_shedding_amplitude" if any("lift_shedding_amplitude" in r["metrics"] for r in runs) else "lift_amplitude"
-        for row, (metric, ref_key) in enumerate([("drag_mean", "drag_mean" if name == "CFD3" else "drag"),
-                                                 (shedding if name == "CFD3" else "lift_mean",
-                                                  "lift_amplitude" if name == "CFD3" else "lift")]):
+        for row, (metric, reference, label) in enumerate(panels(name, runs)):
             ax = axes[row][col]
             factors = sorted({round(r["config"]["sound_speed"]) for r in runs})
             for c in factors:
                 pts = sorted((r["config"]["resolution"], value(r, metric)) for r in runs if round(r["config"]["sound_speed"]) == c)
                 ax.plot([p[0] for p in pts], [p[1] for p in pts], "o-", label=f"c = {c} U0")
-            if ref_key in ref:
-                ax.axhline(ref[ref_key], color="k", lw=0.8, ls="--", label="Turek & Hron 2006")
+            if isinstance(reference, tuple):
+                ax.axhspan(reference[0], reference[1], color="k", alpha=0.15, label=label)
+            elif reference is not None:
+                ax.axhline(reference, color="k", lw=0.8, ls="--", label=label)
             ax.set_xscale("log", base=2)
             ax.set_xlabel("D / dp")
-            ax.set_ylabel(metric.replace("_", " ") + " / (rho U0^2 D)")
+            unit = " / (rho U0^2)" if metric.startswith("pressure") else " / (rho U0^2 D)"
+            ax.set_ylabel(metric.replace("_", " ") + unit)
             ax.set_title(name)
             ax.legend(fontsize=7)
     fig.tight_layout()

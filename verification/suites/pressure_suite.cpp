@@ -9,6 +9,8 @@
 //   drag_drift, lift_drift                          (CFD1, CFD2: the mean over the window's second half
 //                                                    minus that over its first: how far the mean itself
 //                                                    is from settled; reports/pressure.md section 10)
+//   pressure_difference_mean                        (2D-1, 2D-2: the pressure at the cylinder's front point
+//                                                    minus that at its rear point, where the scene observes them)
 //   strouhal, lift_amplitude, drag_amplitude        (CFD3: from the smoothed lift and drag, D = U0 = 1)
 //   lift_shedding_amplitude (and _spread, _cycles), strouhal_shedding
 //                                                   (CFD3: the lift's component in the shedding band)
@@ -45,16 +47,15 @@ WindowStats window_stats(const ObserverSeries& s, std::size_t column, double sta
 
 namespace {
 
-// The lift's shedding component: the lift band-passed to St = 0.1-0.35 (a free cylinder's wake sheds
+// The lift's shedding component: the lift band-passed to the case's band; CFD3's St = 0.1-0.35 (a free cylinder's wake sheds
 // at St = 0.212 (1 - 21.2 / Re), Roshko 1954: 0.17-0.19 at Re = 100-200; the confined benchmark at
 // 0.22. The band leaves out the lines near 0.43: the drag's, and in the lift a second wake mode, not
 // locked to the shedding (section 27); the channel's acoustic modes and the particle noise, all of
 // which the switching count and the percentiles of the smoothed lift take in),
 // its cycles' mean half peak-to-peak, their spread and count, and their frequency (reports/pressure.md
 // section 26).
-void add_shedding_component(const std::vector<double>& t, const std::vector<double>& lift, double window_start, Json& metrics) {
-  constexpr double kLowest = 0.1, kHighest = 0.35;
-  const auto band = band_pass(t, lift, window_start, kLowest, kHighest);
+void add_shedding_component(const std::vector<double>& t, const std::vector<double>& lift, const BenchmarkCase& b, Json& metrics) {
+  const auto band = band_pass(t, lift, b.window_start, b.shedding_band_low, b.shedding_band_high);
   if (!band) return;
   const auto cycles = oscillation_stats(band->t, band->y, band->t.front());
   if (!cycles) return;
@@ -62,6 +63,24 @@ void add_shedding_component(const std::vector<double>& t, const std::vector<doub
   metrics["lift_shedding_amplitude_spread"] = cycles->amplitude_spread;
   metrics["lift_shedding_cycles"] = cycles->cycles;
   metrics["strouhal_shedding"] = cycles->frequency;  // D = U0 = 1
+}
+
+std::string channel_description(const std::string& scene) {
+  if (scene == "turek_hron_cfd.json") return "periodic, 13 D with a 2 D inflow buffer (the benchmark: 25 D, free outflow)";
+  if (scene == "schaefer_turek_cylinder.json") return "the benchmark's: 22 D from a velocity inlet to a pressure outlet";
+  return "the benchmark's: 25 D from a velocity inlet to a pressure outlet";
+}
+
+// The pressure at the cylinder's front point minus that at its rear point, where the scene observes
+// both (Schaefer & Turek's delta p), averaged over the window: both observers sample at the same
+// times, so the mean of the difference is the difference of the means.
+void add_pressure_difference(const std::vector<ObserverSeries>& series, double window_start, Json& metrics) {
+  const auto named = [&](const char* name) {
+    return std::find_if(series.begin(), series.end(), [&](const ObserverSeries& s) { return s.name == name; });
+  };
+  const auto front = named("front"), rear = named("rear");
+  if (front == series.end() || rear == series.end()) return;
+  metrics["pressure_difference_mean"] = window_stats(*front, 0, window_start).mean - window_stats(*rear, 0, window_start).mean;
 }
 
 }  // namespace
@@ -85,8 +104,7 @@ void run_cylinder(const SuiteContext& ctx, CylinderRun& out) {
   r.config = {{"benchmark", b.name}, {"reynolds", b.reynolds}, {"resolution", out.resolution},
               {"dp", run.scene.parameters.at("dp")}, {"sound_speed", run.scene.parameters.at("sound_speed")},
               {"end_time", b.end_time}, {"window_start", b.window_start}, {"scene", out.scene},
-              {"channel", out.scene == "turek_hron_cfd.json" ? "periodic, 13 D with a 2 D inflow buffer (the benchmark: 25 D, free outflow)"
-                                                              : "the benchmark's: 25 D from a velocity inlet to a pressure outlet"}};
+              {"channel", channel_description(out.scene)}};
   r.cost = cost_json(run);
   r.compressibility = compressibility_record(run);
   r.diverged = run.result.divergence.has_value();
@@ -98,6 +116,7 @@ void run_cylinder(const SuiteContext& ctx, CylinderRun& out) {
   const auto viscous = std::find(forces.columns.begin(), forces.columns.end(), "fx_viscous");
   if (viscous != forces.columns.end())
     r.metrics["drag_viscous_mean"] = window_stats(forces, static_cast<std::size_t>(viscous - forces.columns.begin()), b.window_start).mean;
+  add_pressure_difference(run.result.series, b.window_start, r.metrics);
   if (!b.shedding) {
     // A steady case's mean still carries the channel's slowly decaying acoustic mode (period about
     // 2 L / c) and any drift: the difference of the two halves' means says how settled it is.
@@ -119,29 +138,21 @@ void run_cylinder(const SuiteContext& ctx, CylinderRun& out) {
     r.metrics["lift_cycles"] = s->switches - 1;
   }
   if (const auto f = spectral_peak_frequency(t, lift_smooth, b.window_start, 0.1, 1.0)) r.metrics["strouhal_spectral"] = *f;
-  add_shedding_component(t, series_column(forces, 1), b.window_start, r.metrics);
+  add_shedding_component(t, series_column(forces, 1), b, r.metrics);
   const std::vector<double> drag_smooth = moving_average(t, series_column(forces, 0), 0.5);
   if (const auto s = switching_period(t, drag_smooth, b.window_start)) r.metrics["drag_amplitude"] = 0.5 * (s->high_level - s->low_level);
 }
 
-namespace {
+const CylinderRun* CylinderResults::find(const std::string& benchmark, int resolution, int factor) const {
+  for (const CylinderRun& r : runs_)
+    if (r.benchmark->name == benchmark && r.resolution == resolution && r.sound_speed_factor == factor) return &r;
+  return nullptr;
+}
 
-class CylinderResults {
- public:
-  explicit CylinderResults(const std::vector<CylinderRun>& runs) : runs_(runs) {}
-  const CylinderRun* find(const std::string& benchmark, int resolution, int factor) const {
-    for (const CylinderRun& r : runs_)
-      if (r.benchmark->name == benchmark && r.resolution == resolution && r.sound_speed_factor == factor) return &r;
-    return nullptr;
-  }
-  double value(const std::string& benchmark, int resolution, int factor, const std::string& name) const {
-    const CylinderRun* run = find(benchmark, resolution, factor);
-    return run ? run_metric(run->record, name) : NAN;
-  }
-
- private:
-  const std::vector<CylinderRun>& runs_;
-};
+double CylinderResults::value(const std::string& benchmark, int resolution, int factor, const std::string& name) const {
+  const CylinderRun* run = find(benchmark, resolution, factor);
+  return run ? run_metric(run->record, name) : NAN;
+}
 
 void check_sound_speed_independence(SuiteSummary& summary, const CylinderResults& results, const std::string& benchmark,
                                     int resolution, int factor, int against, double tolerance, const std::string& source) {
@@ -156,7 +167,8 @@ Json convergence_table(const CylinderResults& results, const std::vector<Benchma
                        int factor) {
   Json table = Json::array();
   for (const BenchmarkCase& b : cases) {
-    for (const char* name : {"drag_mean", "lift_mean", "strouhal", "lift_amplitude", "strouhal_shedding", "lift_shedding_amplitude"}) {
+    for (const char* name : {"drag_mean", "lift_mean", "pressure_difference_mean", "strouhal", "lift_amplitude", "strouhal_shedding",
+                              "lift_shedding_amplitude"}) {
       Json row = {{"benchmark", b.name}, {"metric", name}, {"sound_speed_factor", factor}};
       std::vector<double> values;
       for (int res : ladder) values.push_back(results.value(b.name, res, factor, name));
@@ -174,8 +186,6 @@ Json convergence_table(const CylinderResults& results, const std::vector<Benchma
   }
   return table;
 }
-
-}  // namespace
 
 double run_metric(const SuiteRun& run, const std::string& name) {
   return !run.diverged && run.metrics.contains(name) ? run.metrics[name].get<double>() : NAN;
@@ -263,6 +273,7 @@ SuiteSummary run_pressure_suite(const SuiteContext& ctx) {
   run_hydrostatic_tank(ctx, summary);
   run_submerged_cylinder(ctx, summary);
   run_cylinder_benchmarks(ctx, summary);
+  run_schaefer_turek(ctx, summary);
   summary.write(ctx.out_dir);
   render_figures(ctx, "plot_pressure.py", summary);
   summary.write(ctx.out_dir);
