@@ -31,6 +31,14 @@ def pick(benchmark, c, variant=None, **fixed):
     return out
 
 
+def drag_panel(ax, xlabel, title):
+    ax.axhline(DRAG_2D1, color="k", lw=0.8, ls="--", label="Schaefer & Turek")
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel("2D-1 drag coefficient c_D")
+    ax.set_title(title)
+    ax.legend(fontsize=7)
+
+
 fig, axes = plt.subplots(1, 3, figsize=(13, 3.8), constrained_layout=True)
 ax = axes[0]
 for res in ["10", "20"]:
@@ -38,11 +46,7 @@ for res in ["10", "20"]:
     ax.plot([p[0] for p in pts], [p[1] for p in pts], "o-", label=f"D/dp = {res}")
 pts = [(float(r["h_over_dp"]), float(r["cD_mean"])) for r in pick("2D-1", "10", "", D_over_dp="40")]
 ax.plot([p[0] for p in pts], [p[1] for p in pts], "s", label="D/dp = 40")
-ax.axhline(DRAG_2D1, color="k", lw=0.8, ls="--", label="Schaefer & Turek")
-ax.set_xlabel("h / dp")
-ax.set_ylabel("2D-1 drag coefficient c_D")
-ax.set_title("2D-1 (Re = 20), c = 10 U0")
-ax.legend(fontsize=7)
+drag_panel(ax, "h / dp", "2D-1 (Re = 20), c = 10 U0")
 
 ax = axes[1]
 for h in ["1.3", "1.6"]:
@@ -52,11 +56,7 @@ for h in ["1.3", "1.6"]:
         pts.append((float(m.group(1)) if m else 0.0, float(r["cD_mean"])))
     pts.sort()
     ax.plot([p[0] for p in pts], [p[1] for p in pts], "o-", label=f"h = {h} dp")
-ax.axhline(DRAG_2D1, color="k", lw=0.8, ls="--", label="Schaefer & Turek")
-ax.set_xlabel("outlet pressure / (rho U0^2)")
-ax.set_ylabel("2D-1 drag coefficient c_D")
-ax.set_title("2D-1, D/dp = 10, c = 40 U0: the datum")
-ax.legend(fontsize=7)
+drag_panel(ax, "outlet pressure / (rho U0^2)", "2D-1, D/dp = 10, c = 40 U0: the datum")
 
 ax = axes[2]
 pts = sorted((float(r["D_over_dp"]), float(r["cL_amplitude"])) for r in pick("2D-2", "10", "", h_over_dp="1.3"))
