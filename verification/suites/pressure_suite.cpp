@@ -47,13 +47,13 @@ WindowStats window_stats(const ObserverSeries& s, std::size_t column, double sta
 
 namespace {
 
-// The lift's shedding component: the lift band-passed to the case's band; CFD3's St = 0.1-0.35 (a free cylinder's wake sheds
-// at St = 0.212 (1 - 21.2 / Re), Roshko 1954: 0.17-0.19 at Re = 100-200; the confined benchmark at
-// 0.22. The band leaves out the lines near 0.43: the drag's, and in the lift a second wake mode, not
-// locked to the shedding (section 27); the channel's acoustic modes and the particle noise, all of
-// which the switching count and the percentiles of the smoothed lift take in),
-// its cycles' mean half peak-to-peak, their spread and count, and their frequency (reports/pressure.md
-// section 26).
+// The lift's shedding component: the lift band-passed to the case's band (CFD3's St = 0.1-0.35: a
+// free cylinder's wake sheds at St = 0.212 (1 - 21.2 / Re), Roshko 1954: 0.17-0.19 at Re = 100-200;
+// the confined benchmark at 0.22. The band leaves out the lines near 0.43: the drag's, and in the
+// lift a second wake mode, not locked to the shedding (section 27); the channel's acoustic modes and
+// the particle noise, all of which the switching count and the percentiles of the smoothed lift take
+// in), its cycles' mean half peak-to-peak, their spread and count, and their frequency
+// (reports/pressure.md section 26).
 void add_shedding_component(const std::vector<double>& t, const std::vector<double>& lift, const BenchmarkCase& b, Json& metrics) {
   const auto band = band_pass(t, lift, b.window_start, b.shedding_band_low, b.shedding_band_high);
   if (!band) return;
