@@ -37,7 +37,9 @@ extern "C" void request_stop(int) { g_stop_requested.store(true); }
 std::string pressure_forces_description(const mrsph::Simulation& sim) {
   const auto& f = sim.fluid();
   std::string s = f.options.pressure_reference == mrsph::PressureReference::Mean ? "the mean pressure" : "zero";
-  if (f.options.pressure_lattice_correction)
+  if (f.options.pressure_gradient_correction)
+    s += ", each side with its kernel-gradient correction";
+  else if (f.options.pressure_lattice_correction)
     s += f.options.measured_pressure_moment ? ", divided by the arrangement's measured moment" : ", divided by the lattice moment";
   if (f.options.rest_state_at_walls && !f.riemann.rest_pressure_gradient(sim.body_force.constant).isZero())
     s += ", the rest state continued into the walls";

@@ -61,7 +61,9 @@ struct MovedGeometry {
 // f^p_i (Eqs. 28, 21, 30) and the density rate's pressure-difference part (the Riemann term, or the
 // delta-SPH diffusion D_i of density_diffusion.hpp); then, with kick_dt != 0, the kick. kRefresh: the
 // pair geometry at the current positions (FluidOptions::refresh_pair_geometry), else as cached.
-template <bool kRefresh>
+// kCorrected: each side's pressure with its kernel-gradient correction
+// (FluidOptions::pressure_gradient_correction), else the plain sum (p_i + p_j - 2 p_ref).
+template <bool kRefresh, bool kCorrected>
 struct PressureInteraction {
   // Particle i's values, read once (a boundary pair's force is stored in the pair loop, after which
   // the compiler could not assume i's arrays unchanged), and its sums.
@@ -71,6 +73,7 @@ struct PressureInteraction {
     Real vol_scaled;      // V_i, divided by FluidBody::gradient_moment with the pressure lattice correction
     Vec2 acc_beyond_rest;  // F^prior_i / m_i + g - g_rest: the wall pressure's clipped acceleration
     Vec2 moved;           // r_i - r_i at the list build (kRefresh)
+    Mat2 correction;      // B_i (kCorrected)
     Vec2 force = Vec2::Zero();
     Real drho = 0.0, diffusion = 0.0;
   };
@@ -87,7 +90,7 @@ struct PressureInteraction {
   const Vec2& body_acceleration;
   Real kick_dt;
   const NeighborList& inner_list;
-  Real scale = fluid.options.pressure_lattice_correction ? 1.0 / fluid.gradient_moment : 1.0;
+  Real scale = fluid.options.pressure_lattice_correction && !kCorrected ? 1.0 / fluid.gradient_moment : 1.0;
   Real delta = fluid.options.delta_sph;
   Real diffusion_scale = delta * fluid.h() * fluid.material.sound_speed();
   Vec2 rest_gradient = fluid.riemann.rest_pressure_gradient(body_acceleration);
@@ -102,7 +105,21 @@ struct PressureInteraction {
   Sum begin(std::size_t i) const {
     return {f.p[i], f.rho[i], f.p[i] - 2.0 * fluid.reference_pressure, scale * f.vol[i],
             f.force_prior[i] / f.mass[i] + acceleration_beyond_rest,
-            kRefresh ? fluid.moved_since_list_build[i] : Vec2::Zero()};
+            kRefresh ? fluid.moved_since_list_build[i] : Vec2::Zero(),
+            kCorrected ? fluid.gradient_correction[i] : Mat2::Identity()};
+  }
+
+  // -V_i V_j dW times (p_i + p_j - 2 p_ref) e, or with each side's correction
+  // ((p_i - p_ref) B_i + (p_j - p_ref) B_j) e (kCorrected).
+  template <class Geometry>
+  Vec2 pair_force(const Sum& s, Real vol_j, Real p_j, const Mat2& correction_j, const Geometry& g) const {
+    if constexpr (kCorrected) {
+      const Vec2& e = g.gradient_vector();
+      return -(s.vol_scaled * vol_j * g.gradient_scale()) *
+             ((s.p_relative + fluid.reference_pressure) * (s.correction * e) + (p_j - fluid.reference_pressure) * (correction_j * e));
+    } else {
+      return -(s.vol_scaled * vol_j * (s.p_relative + p_j) * g.gradient_scale()) * g.gradient_vector();
+    }
   }
 
   // The pair's geometry at the current positions (kRefresh).
@@ -121,7 +138,7 @@ struct PressureInteraction {
   template <class Geometry>
   void inner_pair_force(Sum& s, std::size_t i, const Geometry& g) const {
     const Index j = g.j();
-    s.force -= (s.vol_scaled * f.vol[j] * (s.p_relative + f.p[j]) * g.gradient_scale()) * g.gradient_vector();
+    s.force += pair_force(s, f.vol[j], f.p[j], kCorrected ? fluid.gradient_correction[j] : s.correction, g);
     if (fluid.riemann.continuity) s.drho += f.vol[j] * continuity_term(s.p, f.p[j], g) * g.dW();
     if (delta != 0.0)
       s.diffusion += density_diffusion_pair(s.rho, f.rho[j], fluid.density_gradient[i], fluid.density_gradient[j],
@@ -141,7 +158,7 @@ struct PressureInteraction {
   void contact_pair_force(Sum& s, const Side& b, Index k, const Geometry& g) const {
     const Index a = g.j();
     const Real p_d = wall_pressure(s.p, s.rho, s.acc_beyond_rest, b.abar[a], -g.r_ij(), wall_rest_gradient);
-    const Vec2 pair = -(s.vol_scaled * b.vol[a] * (s.p_relative + p_d) * g.gradient_scale()) * g.gradient_vector();
+    const Vec2 pair = pair_force(s, b.vol[a], p_d, s.correction, g);
     b.pair_force[k] = pair;
     s.force += pair;
     if (fluid.riemann.continuity) s.drho += b.vol[a] * continuity_term(s.p, p_d, g) * g.dW();
@@ -239,11 +256,16 @@ void compute_pressure_interaction(FluidBody& fluid, const NeighborList& inner, s
                                   const Vec2& body_acceleration, Real kick_dt) {
   for (FluidContact& c : contacts) c.pair_pressure_force.resize(c.pairs.pair_count());
   compute_renormalised_density_gradient(fluid, inner);
+  const auto sweep = [&](auto interaction) { sweep_with_contacts(inner, contacts, interaction); };
+  const bool corrected = fluid.options.pressure_gradient_correction;
   if (fluid.options.refresh_pair_geometry) {
     measure_displacements_since_list_build(fluid, contacts);
-    sweep_with_contacts(inner, contacts, PressureInteraction<true>{fluid, fluid.particles, contacts, body_acceleration, kick_dt, inner});
-  } else
-    sweep_with_contacts(inner, contacts, PressureInteraction<false>{fluid, fluid.particles, contacts, body_acceleration, kick_dt, inner});
+    if (corrected) sweep(PressureInteraction<true, true>{fluid, fluid.particles, contacts, body_acceleration, kick_dt, inner});
+    else sweep(PressureInteraction<true, false>{fluid, fluid.particles, contacts, body_acceleration, kick_dt, inner});
+  } else if (corrected)
+    sweep(PressureInteraction<false, true>{fluid, fluid.particles, contacts, body_acceleration, kick_dt, inner});
+  else
+    sweep(PressureInteraction<false, false>{fluid, fluid.particles, contacts, body_acceleration, kick_dt, inner});
 }
 
 void kick(FluidBody& fluid, Real dt, const Vec2& body_acceleration) {

@@ -43,6 +43,43 @@ struct MomentSum {
   }
 };
 
+// sum_j V_j grad W_ij (x) (r_j - r_i) = -sum_j V_j r_ij dW_ij e_ij (x) e_ij over the fluid and the
+// boundaries (symmetric), at the volumes and the cached geometry the pressure pass reads.
+struct GradientMomentTensor {
+  struct Side {
+    const RealArray& vol;
+  };
+  const FluidParticles& f;
+  const std::vector<FluidContact>& contacts;
+
+  static Mat2 term(Real vol, const Neighbor& n) {
+    const Vec2 e = n.e;
+    return (-vol * n.r * n.dW) * (e * e.transpose());
+  }
+  void inner(Mat2& sum, std::size_t, const Neighbor& n) const { sum += term(f.vol[n.j], n); }
+  Side boundary(std::size_t c) const { return {*contacts[c].boundary.vol}; }
+  void contact(Mat2& sum, std::size_t, const Side& b, Index, const Neighbor& n) const { sum += term(b.vol[n.j], n); }
+};
+
+// FluidBody::gradient_correction: B_i = A_i^-1; 1 / M1 of the square lattice instead in an open
+// boundary's buffer (whose far rows have their supports cut by the buffer's end, not by a wall) and
+// where the support is cut so far that A_i is nearly singular (det below a quarter of the lattice's).
+void measure_gradient_correction(FluidBody& fluid, const NeighborList& inner, const std::vector<FluidContact>& contacts) {
+  const FluidParticles& f = fluid.particles;
+  fluid.gradient_correction.resize(f.size());
+  const Real m1 = fluid.lattice_gradient;
+  parallel_for_each(f.size(), [&](std::size_t i) {
+    if (!f.in_domain(i)) {
+      fluid.gradient_correction[i] = Mat2::Identity() / m1;
+      return;
+    }
+    Mat2 sum = Mat2::Zero();
+    GradientMomentTensor op{f, contacts};
+    visit_with_contacts(inner, contacts, i, op, sum);
+    fluid.gradient_correction[i] = sum.determinant() > 0.25 * m1 * m1 ? Mat2(sum.inverse()) : Mat2(Mat2::Identity() / m1);
+  });
+}
+
 // A support counts as full where the kernel sum reaches 99.7 % of the square lattice's (Wendland C2,
 // h = 1.3 dp, lattice sums): under a free surface the top row has 78.6 % (moment 0.625) and the row
 // below 99.51 % (moment 0.937, 4 % under the full 0.974), while a hexagonal arrangement of the same
@@ -109,6 +146,7 @@ void reinitialise_density(FluidBody& fluid, const NeighborList& inner, const std
   const Real rho0 = fluid.material.rho0();
   const bool free_surface = fluid.options.density == DensityReinitialisation::FreeSurface;
   if (fluid.options.density == DensityReinitialisation::None) {  // the continuity equation's density stays
+    if (fluid.options.pressure_gradient_correction) measure_gradient_correction(fluid, inner, contacts);
     update_reference_pressure(fluid);
     return;
   }
@@ -123,6 +161,7 @@ void reinitialise_density(FluidBody& fluid, const NeighborList& inner, const std
     f.vol[i] = f.mass[i] / rho;
   });
   if (measure) measure_gradient_moment(fluid, inner, contacts, full_support);
+  if (fluid.options.pressure_gradient_correction) measure_gradient_correction(fluid, inner, contacts);
   update_reference_pressure(fluid);
 }
 

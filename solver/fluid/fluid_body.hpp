@@ -70,6 +70,13 @@ struct FluidOptions {
   // hexagonal (0.985-0.986), and the square lattice's 0.974 leaves its pressure 1.2 % low
   // (reports/pressure.md section 18). One number for the whole fluid: momentum stays exact.
   bool measured_pressure_moment = false;
+  // The pressure pair force with each particle's kernel-gradient correction B = (sum_j V_j grad W_ij
+  // (x) (r_j - r_i))^-1 (over the fluid and the boundaries, measured at each density
+  // re-initialisation): -V_i V_j ((p_i - p_ref) B_i + (p_j - p_ref) B_j) grad W_ij, a boundary's
+  // dummy with the fluid particle's B. Antisymmetric, so momentum stays exact; exact for a linear
+  // pressure on any arrangement, and a uniform pressure's stress is isotropic on a sheared one, where
+  // the plain sum's is not (reports/pressure.md section 29). Replaces the lattice correction.
+  bool pressure_gradient_correction = false;
   // delta of the delta-SPH density diffusion with Antuono's correction (density_diffusion.hpp),
   // in place of the Riemann pressure-difference term; 0: off (the paper's method).
   Real delta_sph = 0.0;
@@ -121,6 +128,7 @@ struct FluidBody {
   Real lattice_gradient;        // M1 for this dp and h
   Real gradient_moment;         // what the pressure lattice correction divides by: M1, or measured
   Real reference_pressure = 0.0;  // subtracted from p in the pair forces (PressureReference)
+  Mat2Array gradient_correction;  // B_i of FluidOptions::pressure_gradient_correction
   Vec2Array density_gradient;     // <grad rho>^L of the delta-SPH diffusion, each acoustic step
   // With options.refresh_pair_geometry: positions at the list build, and each particle's displacement
   // since then (set before each pressure pass).

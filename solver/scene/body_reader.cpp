@@ -86,6 +86,10 @@ void read_fluid_options(const SceneNode& node, FluidOptions& o) {
   o.refresh_pair_geometry = node.flag_or("refresh_pair_geometry", o.refresh_pair_geometry);
   o.rest_state_at_walls = node.flag_or("rest_state_at_walls", o.rest_state_at_walls);
   o.measured_pressure_moment = node.flag_or("measured_pressure_moment", o.measured_pressure_moment);
+  o.pressure_gradient_correction = node.flag_or("pressure_gradient_correction", o.pressure_gradient_correction);
+  if (o.pressure_gradient_correction && node.has("pressure_lattice_correction") && o.pressure_lattice_correction)
+    node.fail("pressure_lattice_correction", "the kernel-gradient correction includes the lattice's moment; "
+                                             "expected pressure_lattice_correction false (or absent) with pressure_gradient_correction");
   o.mirrored_wall_velocity =
       node.choice_or("viscous_wall_velocity", {"extrapolated", "mirrored"}, "extrapolated") == "mirrored";
   if (o.measured_pressure_moment && node.has("pressure_lattice_correction") && !o.pressure_lattice_correction)

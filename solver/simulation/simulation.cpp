@@ -1,5 +1,6 @@
 #include "simulation/simulation.hpp"
 
+#include "core/errors.hpp"
 #include "core/parallel.hpp"
 #include "fluid/density_summation.hpp"
 #include "fluid/transport_velocity.hpp"
@@ -177,6 +178,10 @@ void Simulation::resolve_automatic_fluid_options() {
                         open_boundaries.empty();
   if (o.pressure_reference == PressureReference::Automatic)
     o.pressure_reference = confined ? PressureReference::Mean : PressureReference::Zero;
+  if (o.density == DensityReinitialisation::FreeSurface && o.pressure_gradient_correction)
+    throw InputError("", "fluid.pressure_gradient_correction",
+                     "expected false for a fluid with a free surface (gravity along a non-periodic axis, or "
+                     "density_reinitialisation free_surface): the correction needs full kernel supports, which a free surface cuts");
   if (o.density == DensityReinitialisation::FreeSurface) use_free_surface_defaults(o);
   // The continuity equation's wall term follows what defines the density (wall_rules.hpp).
   if (o.left_to_flow.mirrored_wall_continuity) o.mirrored_wall_continuity = o.density == DensityReinitialisation::None;
