@@ -73,9 +73,11 @@ struct FluidOptions {
   // The pressure pair force with each particle's kernel-gradient correction B = (sum_j V_j grad W_ij
   // (x) (r_j - r_i))^-1 (over the fluid and the boundaries, measured at each density
   // re-initialisation): -V_i V_j ((p_i - p_ref) B_i + (p_j - p_ref) B_j) grad W_ij, a boundary's
-  // dummy with the fluid particle's B. Antisymmetric, so momentum stays exact; exact for a linear
-  // pressure on any arrangement, and a uniform pressure's stress is isotropic on a sheared one, where
-  // the plain sum's is not (reports/pressure.md section 29). Replaces the lattice correction.
+  // dummy with the fluid particle's B. Antisymmetric, so momentum stays exact. A linear pressure's
+  // gradient is exact wherever the arrangement's zero-order residue vanishes (a lattice, stretched or
+  // not), and a uniform pressure's stress is isotropic where B varies slowly, where the plain sum's
+  // is the arrangement's moment tensor: on a sheared arrangement a shear stress in proportion to the
+  // pressure's level (reports/pressure.md section 29). Replaces the lattice correction.
   bool pressure_gradient_correction = false;
   // delta of the delta-SPH density diffusion with Antuono's correction (density_diffusion.hpp),
   // in place of the Riemann pressure-difference term; 0: off (the paper's method).
