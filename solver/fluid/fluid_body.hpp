@@ -77,7 +77,9 @@ struct FluidOptions {
   // gradient is exact wherever the arrangement's zero-order residue vanishes (a lattice, stretched or
   // not), and a uniform pressure's stress is isotropic where B varies slowly, where the plain sum's
   // is the arrangement's moment tensor: on a sheared arrangement a shear stress in proportion to the
-  // pressure's level (reports/pressure.md section 29). Replaces the lattice correction.
+  // pressure's level (reports/pressure.md section 29). Replaces the lattice correction. Not the
+  // summation energy's gradient: it does work no energy accounts for (an inviscid Taylor-Green vortex
+  // gains 49 % kinetic energy over t = 3 L / U), so an option for diagnosis, off by default.
   bool pressure_gradient_correction = false;
   // delta of the delta-SPH density diffusion with Antuono's correction (density_diffusion.hpp),
   // in place of the Riemann pressure-difference term; 0: off (the paper's method).
