@@ -87,17 +87,21 @@ Json poiseuille_metrics(const Simulation& sim, const LoadedScene& scene, double 
           {"particles_deleted", sim.open_boundaries[0].ledger.deleted + sim.open_boundaries[1].ledger.deleted}};
 }
 
+// poiseuille_pressure.json with these overrides; mass0: the domain's mass at the start.
+SceneRun run_poiseuille_scene(const SuiteContext& ctx, const std::vector<std::string>& overrides, double& mass0) {
+  return run_scene(ctx, "poiseuille_pressure.json", overrides, [&](const LoadedScene& scene) {
+    mass0 = domain_mass(scene.simulation->fluid().particles);
+    return RunOptions{};
+  });
+}
+
 SuiteRun run_poiseuille(const SuiteContext& ctx, int resolution, bool corrected) {
   const std::string name = fmt::format("Poiseuille by pressure H/dp={}{}", resolution, corrected ? "" : " (uncorrected gradient)");
   if (ctx.log) ctx.log("open-boundaries: " + name);
   double mass0 = 0.0;
-  SceneRun run = run_scene(ctx, "poiseuille_pressure.json",
-                           {fmt::format("parameters.resolution={}", resolution),
-                            fmt::format("fluid.pressure_lattice_correction={}", corrected)},
-                           [&](const LoadedScene& scene) {
-                             mass0 = domain_mass(scene.simulation->fluid().particles);
-                             return RunOptions{};
-                           });
+  SceneRun run = run_poiseuille_scene(ctx, {fmt::format("parameters.resolution={}", resolution),
+                                            fmt::format("fluid.pressure_lattice_correction={}", corrected)},
+                                      mass0);
   SuiteRun r;
   record_run(r, run, name, {{"resolution", resolution}, {"pressure_lattice_correction", corrected},
                             {"scene", "poiseuille_pressure.json"}, {"end_time", run.scene.run.end_time}});
@@ -114,13 +118,9 @@ SuiteRun run_poiseuille_datum(const SuiteContext& ctx, double datum) {
   const std::string name = fmt::format("Poiseuille by pressure Re=100 L=10H, outlet datum {:g} rho U^2", datum);
   if (ctx.log) ctx.log("open-boundaries: " + name);
   double mass0 = 0.0;
-  SceneRun run = run_scene(ctx, "poiseuille_pressure.json",
-                           {"parameters.Re=100", "parameters.L=10", "parameters.resolution=20", "end_time=60",
-                            fmt::format("parameters.outlet_pressure={}", datum)},
-                           [&](const LoadedScene& scene) {
-                             mass0 = domain_mass(scene.simulation->fluid().particles);
-                             return RunOptions{};
-                           });
+  SceneRun run = run_poiseuille_scene(ctx, {"parameters.Re=100", "parameters.L=10", "parameters.resolution=20", "end_time=60",
+                                            fmt::format("parameters.outlet_pressure={}", datum)},
+                                      mass0);
   SuiteRun r;
   record_run(r, run, name, {{"Re", 100}, {"L_over_H", 10}, {"resolution", 20}, {"outlet_pressure", datum},
                             {"scene", "poiseuille_pressure.json"}, {"end_time", run.scene.run.end_time}});
