@@ -36,7 +36,10 @@ extern "C" void request_stop(int) { g_stop_requested.store(true); }
 // What the fluid's pressure forces are measured from, divided by and continued into the walls with.
 std::string pressure_forces_description(const mrsph::Simulation& sim) {
   const auto& f = sim.fluid();
-  std::string s = f.options.pressure_reference == mrsph::PressureReference::Mean ? "the mean pressure" : "zero";
+  const auto reference = f.options.pressure_reference;
+  std::string s = reference == mrsph::PressureReference::Mean     ? "the mean pressure"
+                  : reference == mrsph::PressureReference::Linear ? "a linear fit of the pressure, its gradient applied exactly"
+                                                                  : "zero";
   if (f.options.pressure_gradient_correction)
     s += ", each side with its kernel-gradient correction";
   else if (f.options.pressure_lattice_correction)

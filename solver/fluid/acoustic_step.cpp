@@ -6,6 +6,7 @@
 #include "interaction/pair_sweep.hpp"
 
 #include <algorithm>
+#include <type_traits>
 
 namespace mrsph {
 
@@ -58,18 +59,24 @@ struct MovedGeometry {
   Neighbor neighbor() const { return m.as_neighbor(); }
 };
 
+// The pressure pair force's form: the plain sum (p_i + p_j - 2 p_ref) with a constant p_ref (Zero,
+// Mean); each side's pressure with its kernel-gradient correction
+// (FluidOptions::pressure_gradient_correction); the plain sum on p - p_ref(x) with p_ref linear in x
+// (PressureReference::Linear), plus the exact -V_i grad p_ref (reference_pressure.hpp).
+enum class PairPressure { Plain, Corrected, LinearReference };
+
 // f^p_i (Eqs. 28, 21, 30) and the density rate's pressure-difference part (the Riemann term, or the
 // delta-SPH diffusion D_i of density_diffusion.hpp); then, with kick_dt != 0, the kick. kRefresh: the
 // pair geometry at the current positions (FluidOptions::refresh_pair_geometry), else as cached.
-// kCorrected: each side's pressure with its kernel-gradient correction
-// (FluidOptions::pressure_gradient_correction), else the plain sum (p_i + p_j - 2 p_ref).
-template <bool kRefresh, bool kCorrected>
+template <bool kRefresh, PairPressure kForm>
 struct PressureInteraction {
+  static constexpr bool kCorrected = kForm == PairPressure::Corrected;
+  static constexpr bool kLinear = kForm == PairPressure::LinearReference;
   // Particle i's values, read once (a boundary pair's force is stored in the pair loop, after which
   // the compiler could not assume i's arrays unchanged), and its sums.
   struct Sum {
     Real p, rho;
-    Real p_relative;      // p_i - 2 p_ref: the pair forces use p_i + p_j - 2 p_ref
+    Real p_relative;      // p_i - 2 p_ref(r_i): the pair forces use p_i + p_j - 2 p_ref(r_i) + grad p_ref . r_ij
     Real vol_scaled;      // V_i, divided by FluidBody::gradient_moment with the pressure lattice correction
     Vec2 acc_beyond_rest;  // F^prior_i / m_i + g - g_rest: the wall pressure's clipped acceleration
     Vec2 moved;           // r_i - r_i at the list build (kRefresh)
@@ -103,20 +110,24 @@ struct PressureInteraction {
       body_acceleration - (walls_at_rest_state ? fluid.riemann.rest_acceleration(body_acceleration) : Vec2::Zero());
 
   Sum begin(std::size_t i) const {
-    return {f.p[i], f.rho[i], f.p[i] - 2.0 * fluid.reference_pressure, scale * f.vol[i],
+    return {f.p[i], f.rho[i], f.p[i] - 2.0 * (kLinear ? fluid.reference.at(f.pos[i]) : fluid.reference.level), scale * f.vol[i],
             f.force_prior[i] / f.mass[i] + acceleration_beyond_rest,
             kRefresh ? fluid.moved_since_list_build[i] : Vec2::Zero(),
             kCorrected ? fluid.gradient_correction[i] : Mat2::Identity()};
   }
 
-  // -V_i V_j dW times (p_i + p_j - 2 p_ref) e, or with each side's correction
+  // -V_i V_j dW times (p_i + p_j - 2 p_ref) e; with a linear p_ref, (p_i - p_ref(r_i)) + (p_j - p_ref(r_j))
+  // = p_i + p_j - 2 p_ref(r_i) + grad p_ref . r_ij; or with each side's correction
   // ((p_i - p_ref) B_i + (p_j - p_ref) B_j) e (kCorrected).
   template <class Geometry>
   Vec2 pair_force(const Sum& s, Real vol_j, Real p_j, const Mat2& correction_j, const Geometry& g) const {
     if constexpr (kCorrected) {
       const Vec2& e = g.gradient_vector();
       return -(s.vol_scaled * vol_j * g.gradient_scale()) *
-             ((s.p_relative + fluid.reference_pressure) * (s.correction * e) + (p_j - fluid.reference_pressure) * (correction_j * e));
+             ((s.p_relative + fluid.reference.level) * (s.correction * e) + (p_j - fluid.reference.level) * (correction_j * e));
+    } else if constexpr (kLinear) {
+      const Real p_sum = s.p_relative + p_j + fluid.reference.gradient.dot(g.r_ij());
+      return -(s.vol_scaled * vol_j * p_sum * g.gradient_scale()) * g.gradient_vector();
     } else {
       return -(s.vol_scaled * vol_j * (s.p_relative + p_j) * g.gradient_scale()) * g.gradient_vector();
     }
@@ -171,7 +182,8 @@ struct PressureInteraction {
   }
 
   void finish(std::size_t i, const Sum& s) const {
-    f.pressure_force[i] = s.force;
+    if constexpr (kLinear) f.pressure_force[i] = s.force - f.vol[i] * fluid.reference.gradient;
+    else f.pressure_force[i] = s.force;
     f.drho_dt[i] = s.rho * s.drho + diffusion_scale * s.diffusion;
     // No particle reads another's velocity here: the kick can follow particle by particle.
     if (kick_dt != 0.0) kick_particle(f, i, kick_dt, body_acceleration);
@@ -257,15 +269,21 @@ void compute_pressure_interaction(FluidBody& fluid, const NeighborList& inner, s
   for (FluidContact& c : contacts) c.pair_pressure_force.resize(c.pairs.pair_count());
   compute_renormalised_density_gradient(fluid, inner);
   const auto sweep = [&](auto interaction) { sweep_with_contacts(inner, contacts, interaction); };
-  const bool corrected = fluid.options.pressure_gradient_correction;
+  const auto sweep_in_form = [&](auto refresh) {
+    constexpr bool kRefresh = decltype(refresh)::value;
+    if (fluid.options.pressure_gradient_correction)
+      sweep(PressureInteraction<kRefresh, PairPressure::Corrected>{fluid, fluid.particles, contacts, body_acceleration, kick_dt, inner});
+    else if (fluid.options.pressure_reference == PressureReference::Linear)
+      sweep(PressureInteraction<kRefresh, PairPressure::LinearReference>{fluid, fluid.particles, contacts, body_acceleration, kick_dt, inner});
+    else
+      sweep(PressureInteraction<kRefresh, PairPressure::Plain>{fluid, fluid.particles, contacts, body_acceleration, kick_dt, inner});
+  };
   if (fluid.options.refresh_pair_geometry) {
     measure_displacements_since_list_build(fluid, contacts);
-    if (corrected) sweep(PressureInteraction<true, true>{fluid, fluid.particles, contacts, body_acceleration, kick_dt, inner});
-    else sweep(PressureInteraction<true, false>{fluid, fluid.particles, contacts, body_acceleration, kick_dt, inner});
-  } else if (corrected)
-    sweep(PressureInteraction<false, true>{fluid, fluid.particles, contacts, body_acceleration, kick_dt, inner});
-  else
-    sweep(PressureInteraction<false, false>{fluid, fluid.particles, contacts, body_acceleration, kick_dt, inner});
+    sweep_in_form(std::true_type{});
+  } else {
+    sweep_in_form(std::false_type{});
+  }
 }
 
 void kick(FluidBody& fluid, Real dt, const Vec2& body_acceleration) {

@@ -122,22 +122,6 @@ Real summation_density(const FluidBody& fluid, const NeighborList& inner, const 
   return rho0 / fluid.lattice_number_density * sum / v0_i;
 }
 
-// p_ref of FluidOptions::pressure_reference: the mean over the particles (equal masses: the
-// mass-weighted mean), summed in particle order so that runs stay bitwise reproducible.
-void update_reference_pressure(FluidBody& fluid) {
-  if (fluid.options.pressure_reference != PressureReference::Mean || fluid.particles.size() == 0) {
-    fluid.reference_pressure = 0.0;
-    return;
-  }
-  const FluidParticles& f = fluid.particles;
-  Real mass = 0.0, weighted = 0.0;
-  for (std::size_t i = 0; i < f.size(); ++i) {
-    mass += f.mass[i];
-    weighted += f.mass[i] * fluid.material.eos.pressure(f.rho[i]);
-  }
-  fluid.reference_pressure = weighted / mass;
-}
-
 }  // namespace
 
 void reinitialise_density(FluidBody& fluid, const NeighborList& inner, const std::vector<FluidContact>& contacts,

@@ -5,8 +5,8 @@
 // The density is then rho + relaxation (rho_target - rho): with relaxation 1 (the paper's) the
 // summation replaces the continuity equation's density; below 1 it pulls it towards the summation
 // by that fraction (FluidOptions::density_relaxation; reports/pressure.md section 11).
-// Then the reference pressure of the pair forces (FluidOptions::pressure_reference) is updated:
-// the mean pressure of the fluid, or 0.
+// Then the reference pressure of the pair forces (FluidOptions::pressure_reference) is updated
+// (reference_pressure.hpp): the mean pressure of the fluid, a linear fit of it, or 0.
 #pragma once
 
 #include "fluid/fluid_body.hpp"

@@ -3,6 +3,7 @@
 
 #include "core/types.hpp"
 #include "fluid/equation_of_state.hpp"
+#include "fluid/reference_pressure.hpp"
 #include "fluid/riemann_dissipation.hpp"
 #include "kernel/lattice_moments.hpp"
 #include "kernel/wendland_c2.hpp"
@@ -34,7 +35,12 @@ enum class DensityReinitialisation {
 //   Mean  p minus the fluid's mean pressure: in a confined fluid the pressure level is set by the
 //         particle count against the volume, not by the flow, and it grows as c^2; through the
 //         zero-order error of the pressure gradient it would act as a spurious force
-enum class PressureReference { Zero, Mean, Automatic };
+//   Linear p minus a least-squares linear fit of the fluid's pressure along its axes that are not
+//         periodic, the fit's gradient applied exactly as a body force -V_i grad p_ref: a channel
+//         between open boundaries, whose pressure level (the outlet's datum) and mean gradient
+//         otherwise reach the flow through that same error, as a viscosity (reports/pressure.md
+//         sections 29 and 30; fluid/pressure_reference.hpp)
+enum class PressureReference { Zero, Mean, Linear, Automatic };
 
 struct FluidOptions {
   DensityReinitialisation density = DensityReinitialisation::Internal;
@@ -131,7 +137,8 @@ struct FluidBody {
   Real lattice_laplacian;       // M2 for this dp and h, with the viscous regularisation 0.01 h
   Real lattice_gradient;        // M1 for this dp and h
   Real gradient_moment;         // what the pressure lattice correction divides by: M1, or measured
-  Real reference_pressure = 0.0;  // subtracted from p in the pair forces (PressureReference)
+  ReferencePressure reference;  // p_ref(x), subtracted from p in the pair forces (PressureReference)
+  Vec2 non_periodic_axes = Vec2::Ones();  // 1 along an axis that is not periodic (set by the simulation)
   Mat2Array gradient_correction;  // B_i of FluidOptions::pressure_gradient_correction
   Vec2Array density_gradient;     // <grad rho>^L of the delta-SPH diffusion, each acoustic step
   // With options.refresh_pair_geometry: positions at the list build, and each particle's displacement
@@ -168,6 +175,12 @@ struct FluidContact {
   // applies that dissipation in the next acoustic step; so does the boundary. Indexed by boundary
   // particle, so it survives the rebuild of the pair list between advection steps.
   Vec2Array boundary_dissipation_reaction;
+  // With PressureReference::Linear and a boundary immersed in the fluid (Simulation: its particles
+  // within the bounding box of the fluid's), the fluid's grad p_ref: each boundary particle feels
+  // -V_a grad p_ref beside its pairs, so that a closed body feels the linear field's exact
+  // -V_body grad p_ref (reference_pressure.hpp). Else null: a wall that bounds the fluid has its
+  // force measured from p_ref, as under the mean reference.
+  const Vec2* reference_gradient = nullptr;
   // Momentum the fluid gave this boundary since the record was last cleared (by its reader: the
   // runner, after each observer record), its viscous part, and the time that covers: impulse /
   // duration is the force averaged over that time (the force observer's drag and lift), where the

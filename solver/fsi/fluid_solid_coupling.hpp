@@ -23,7 +23,8 @@ namespace mrsph {
 //   Instantaneous             velocity and acceleration of the last solid sub-step
 enum class SolidKinematics { Averaged, AveragedSecondDifference, Instantaneous };
 
-// F^prior_a = -sum over pairs (pressure + viscous) + dissipation reaction.
+// F^prior_a = -sum over pairs (pressure + viscous) + dissipation reaction, and an immersed body's
+// share -V_a grad p_ref of a linear reference pressure (FluidContact::reference_gradient).
 void set_force_from_fluid(const FluidContact& contact, SolidParticles& solid);
 
 // Total force of the fluid on a boundary body in the current acoustic step.

@@ -66,10 +66,11 @@ void read_fluid_options(const SceneNode& node, FluidOptions& o) {
               : density == "free_surface" ? DensityReinitialisation::FreeSurface
               : density == "none"         ? DensityReinitialisation::None
                                           : DensityReinitialisation::Automatic;
-  const std::string reference = node.choice_or("pressure_reference", {"automatic", "mean", "zero"}, "automatic");
-  o.pressure_reference = reference == "mean"   ? PressureReference::Mean
-                         : reference == "zero" ? PressureReference::Zero
-                                               : PressureReference::Automatic;
+  const std::string reference = node.choice_or("pressure_reference", {"automatic", "mean", "linear", "zero"}, "automatic");
+  o.pressure_reference = reference == "mean"     ? PressureReference::Mean
+                         : reference == "linear" ? PressureReference::Linear
+                         : reference == "zero"   ? PressureReference::Zero
+                                                 : PressureReference::Automatic;
   o.density_relaxation = node.positive_or("density_relaxation", 1.0);
   if (o.density_relaxation > 1.0)
     node.fail("density_relaxation", fmt::format("expected a fraction in (0, 1] (1: the paper's summation), got {:g}", o.density_relaxation));

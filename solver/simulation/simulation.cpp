@@ -7,6 +7,8 @@
 #include "geometry/particle_normals.hpp"
 #include "solid/solid_dynamics.hpp"
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -88,6 +90,7 @@ void Simulation::initialise() {
   }
   classify_fluid_zones(fluid_->particles, open_boundaries);
   resolve_automatic_fluid_options();
+  share_linear_reference_with_immersed_bodies();
   rebuild_fluid_relations();
   relax_fluid_particles();
   reinitialise_density(*fluid_, fluid_inner_, contacts_, 1.0);  // the initial density: the arrangement's
@@ -182,10 +185,37 @@ void Simulation::resolve_automatic_fluid_options() {
     throw InputError("", "fluid.pressure_gradient_correction",
                      "expected false for a fluid with a free surface (gravity along a non-periodic axis, or "
                      "density_reinitialisation free_surface): the correction needs full kernel supports, which a free surface cuts");
+  if (o.pressure_reference == PressureReference::Linear && o.density == DensityReinitialisation::FreeSurface)
+    throw InputError("", "fluid.pressure_reference",
+                     "expected \"zero\" or \"automatic\" for a fluid with a free surface (gravity along a non-periodic axis, "
+                     "or density_reinitialisation free_surface), got \"linear\": at a free surface the pressure is absolute (0 is the atmosphere)");
+  if (o.pressure_reference == PressureReference::Linear && o.pressure_gradient_correction)
+    throw InputError("", "fluid.pressure_reference",
+                     "expected \"linear\" without fluid.pressure_gradient_correction: both remove the pressure level's stress, "
+                     "by different pair forces; choose one");
   if (o.density == DensityReinitialisation::FreeSurface) use_free_surface_defaults(o);
   // The continuity equation's wall term follows what defines the density (wall_rules.hpp).
   if (o.left_to_flow.mirrored_wall_continuity) o.mirrored_wall_continuity = o.density == DensityReinitialisation::None;
   fluid_->riemann.set_periodic_axes(box_.periodic[0], box_.periodic[1]);
+  fluid_->non_periodic_axes = Vec2(box_.periodic[0] ? 0.0 : 1.0, box_.periodic[1] ? 0.0 : 1.0);
+}
+
+void Simulation::share_linear_reference_with_immersed_bodies() {
+  if (fluid_->options.pressure_reference != PressureReference::Linear) return;
+  // Immersed: every particle of the body within the bounding box of the fluid's particles (a
+  // cylinder or a beam in a channel), where a wall that bounds the fluid lies outside it. A body
+  // fastened to a bounding wall counts as immersed if it lies within: its fastened face's share of
+  // the linear field, which no fluid touches, is then included (one spacing of a thin body).
+  const auto box_of = [](const Vec2Array& pos) {
+    Eigen::AlignedBox<Real, 2> box;
+    for (const Vec2& x : pos) box.extend(x);
+    return box;
+  };
+  const auto fluid_box = box_of(fluid_->particles.pos);
+  for (std::size_t k = 0; k < contacts_.size(); ++k) {
+    const Vec2Array& pos = k < walls_.size() ? walls_[k].particles.pos : solids_[k - walls_.size()].particles.pos;
+    if (fluid_box.contains(box_of(pos))) contacts_[k].reference_gradient = &fluid_->reference.gradient;
+  }
 }
 
 void Simulation::relax_fluid_particles() {

@@ -118,6 +118,8 @@ class Simulation {
   // Fluid options left to the scene (DensityReinitialisation and PressureReference Automatic):
   // a free surface where gravity acts along an axis that is not periodic, else a confined fluid.
   void resolve_automatic_fluid_options();
+  // PressureReference::Linear: the contacts of the bodies immersed in the fluid read its gradient.
+  void share_linear_reference_with_immersed_bodies();
   // Initial particle relaxation (FluidOptions::relaxation_steps), bodies held still, after the
   // perturbation of FluidOptions::relaxation_perturbation.
   void relax_fluid_particles();
