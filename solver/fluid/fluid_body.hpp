@@ -39,7 +39,7 @@ enum class DensityReinitialisation {
 //         periodic, the fit's gradient applied exactly as a body force -V_i grad p_ref: a channel
 //         between open boundaries, whose pressure level (the outlet's datum) and mean gradient
 //         otherwise reach the flow through that same error, as a viscosity (reports/pressure.md
-//         sections 29 and 30; fluid/pressure_reference.hpp)
+//         sections 29 and 30; fluid/reference_pressure.hpp)
 enum class PressureReference { Zero, Mean, Linear, Automatic };
 
 struct FluidOptions {
