@@ -26,6 +26,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <limits>
 
@@ -87,17 +88,21 @@ void add_pressure_difference(const std::vector<ObserverSeries>& series, double w
 
 void run_cylinder(const SuiteContext& ctx, CylinderRun& out) {
   const BenchmarkCase& b = *out.benchmark;
-  const std::string name = fmt::format("{} D/dp={} c={}U0", b.name, out.resolution, out.sound_speed_factor);
+  const std::string name = fmt::format("{} D/dp={} c={}U0{}", b.name, out.resolution, out.sound_speed_factor,
+                                       out.variant.empty() ? "" : " " + out.variant);
   if (ctx.log) ctx.log("pressure: " + name);
-  const std::vector<std::string> overrides{fmt::format("parameters.Re={}", b.reynolds),
-                                           fmt::format("parameters.resolution={}", out.resolution),
-                                           fmt::format("parameters.sound_speed_factor={}", out.sound_speed_factor)};
+  std::vector<std::string> overrides{fmt::format("parameters.Re={}", b.reynolds),
+                                     fmt::format("parameters.resolution={}", out.resolution),
+                                     fmt::format("parameters.sound_speed_factor={}", out.sound_speed_factor)};
+  overrides.insert(overrides.end(), out.overrides.begin(), out.overrides.end());
   SceneRun run = run_scene(ctx, out.scene, overrides, [&](const LoadedScene&) {
     RunOptions options;
     options.end_time = b.end_time;
     return options;
   });
-  write_observer_series(run.result.series, ctx.out_dir / fmt::format("{}_res{}_c{}", b.name, out.resolution, out.sound_speed_factor));
+  std::string series_dir = fmt::format("{}_res{}_c{}", b.name, out.resolution, out.sound_speed_factor);
+  for (const char c : out.variant) series_dir += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+  write_observer_series(run.result.series, ctx.out_dir / series_dir);
 
   SuiteRun& r = out.record;
   r.case_name = name;
@@ -105,6 +110,7 @@ void run_cylinder(const SuiteContext& ctx, CylinderRun& out) {
               {"dp", run.scene.parameters.at("dp")}, {"sound_speed", run.scene.parameters.at("sound_speed")},
               {"end_time", b.end_time}, {"window_start", b.window_start}, {"scene", out.scene},
               {"channel", channel_description(out.scene)}};
+  if (!out.variant.empty()) r.config["variant"] = {{"name", out.variant}, {"overrides", out.overrides}};
   r.cost = cost_json(run);
   r.compressibility = compressibility_record(run);
   r.diverged = run.result.divergence.has_value();
@@ -143,14 +149,18 @@ void run_cylinder(const SuiteContext& ctx, CylinderRun& out) {
   if (const auto s = switching_period(t, drag_smooth, b.window_start)) r.metrics["drag_amplitude"] = 0.5 * (s->high_level - s->low_level);
 }
 
-const CylinderRun* CylinderResults::find(const std::string& benchmark, int resolution, int factor) const {
+const CylinderRun* CylinderResults::find(const std::string& benchmark, int resolution, int factor,
+                                         const std::string& variant) const {
   for (const CylinderRun& r : runs_)
-    if (r.benchmark->name == benchmark && r.resolution == resolution && r.sound_speed_factor == factor) return &r;
+    if (r.benchmark->name == benchmark && r.resolution == resolution && r.sound_speed_factor == factor &&
+        r.variant == variant)
+      return &r;
   return nullptr;
 }
 
-double CylinderResults::value(const std::string& benchmark, int resolution, int factor, const std::string& name) const {
-  const CylinderRun* run = find(benchmark, resolution, factor);
+double CylinderResults::value(const std::string& benchmark, int resolution, int factor, const std::string& name,
+                              const std::string& variant) const {
+  const CylinderRun* run = find(benchmark, resolution, factor, variant);
   return run ? run_metric(run->record, name) : NAN;
 }
 

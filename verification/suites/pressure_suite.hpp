@@ -42,6 +42,9 @@ struct CylinderRun {
   SuiteRun record;
   std::string scene = "turek_hron_cfd.json";  // or turek_hron_cfd_open.json, the benchmark's channel;
                                                // schaefer_turek_cylinder.json for 2D-1 and 2D-2
+  // A run beside the ladder: its name (empty on the ladder) and the scene overrides that make it.
+  std::string variant = {};
+  std::vector<std::string> overrides = {};
 };
 
 // Runs it and fills its record: drag and lift means over the window; for CFD3 and 2D-2 also St and
@@ -53,8 +56,9 @@ void run_cylinder(const SuiteContext& ctx, CylinderRun& out);
 class CylinderResults {
  public:
   explicit CylinderResults(const std::vector<CylinderRun>& runs) : runs_(runs) {}
-  const CylinderRun* find(const std::string& benchmark, int resolution, int factor) const;
-  double value(const std::string& benchmark, int resolution, int factor, const std::string& name) const;
+  const CylinderRun* find(const std::string& benchmark, int resolution, int factor, const std::string& variant = {}) const;
+  double value(const std::string& benchmark, int resolution, int factor, const std::string& name,
+               const std::string& variant = {}) const;
 
  private:
   const std::vector<CylinderRun>& runs_;
