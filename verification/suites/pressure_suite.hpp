@@ -3,7 +3,8 @@
 //   Turek & Hron CFD1-CFD3 (Re = 20, 100 steady; 200 periodic): drag, lift, Strouhal number on a
 //     resolution ladder and at three sound speeds (the incompressible limit must not depend on c)
 //   Schaefer & Turek 2D-1 and 2D-2 (the cylinder without the beam, Re = 20 steady, 100 periodic):
-//     drag, lift, St and the pressure difference between the cylinder's front and rear points
+//     drag, lift, St and the pressure difference between the cylinder's front and rear points; 2D-1's
+//     drag with the linear pressure reference against the outlet's datum
 //   still water tank: pressure against rho g (H - y) after settling, and its noise
 //   a cylinder under the surface of still water: its buoyancy against Archimedes, at four sound speeds
 //   Taylor-Green vortex: velocity decay and the pressure field against the analytic solution

@@ -36,7 +36,7 @@ const std::vector<SuiteEntry>& registered_suites() {
        run_valve_suite},
       {"fish", "passively flapping tethered fish-like body: flapping frequency, amplitudes, Lissajous ratio, travelling wave",
        run_fish_suite},
-      {"pressure", "pressure and forces: Turek-Hron CFD1-3 drag, lift, St at three resolutions and sound speeds; Schaefer-Turek 2D-1, 2D-2 (the cylinder alone): drag, front-to-rear pressure difference, lift, St; still water tank; a submerged cylinder's buoyancy; Taylor-Green vortex",
+      {"pressure", "pressure and forces: Turek-Hron CFD1-3 drag, lift, St at three resolutions and sound speeds; Schaefer-Turek 2D-1, 2D-2 (the cylinder alone): drag, front-to-rear pressure difference, lift, St, and 2D-1 against the outlet datum with the linear pressure reference; still water tank; a submerged cylinder's buoyancy; Taylor-Green vortex",
        run_pressure_suite},
       {"open-boundaries", "inlets and outlets: Poiseuille by a pressure difference, buffer mass balance, pulse reflection, open-channel start-up",
        run_open_boundary_suite},
