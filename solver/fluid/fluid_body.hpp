@@ -175,8 +175,8 @@ struct FluidContact {
   // applies that dissipation in the next acoustic step; so does the boundary. Indexed by boundary
   // particle, so it survives the rebuild of the pair list between advection steps.
   Vec2Array boundary_dissipation_reaction;
-  // With PressureReference::Linear and a boundary immersed in the fluid (Simulation: its particles
-  // within the bounding box of the fluid's), the fluid's grad p_ref: each boundary particle feels
+  // With PressureReference::Linear and a boundary immersed in the fluid (Simulation: an elastic solid,
+  // or a wall within the bounding box of the fluid's particles), the fluid's grad p_ref: each boundary particle feels
   // -V_a grad p_ref beside its pairs, so that a closed body feels the linear field's exact
   // -V_body grad p_ref (reference_pressure.hpp). Else null: a wall that bounds the fluid has its
   // force measured from p_ref, as under the mean reference.

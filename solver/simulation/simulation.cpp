@@ -202,10 +202,10 @@ void Simulation::resolve_automatic_fluid_options() {
 
 void Simulation::share_linear_reference_with_immersed_bodies() {
   if (fluid_->options.pressure_reference != PressureReference::Linear) return;
-  // Immersed: every particle of the body within the bounding box of the fluid's particles (a
-  // cylinder or a beam in a channel), where a wall that bounds the fluid lies outside it. A body
-  // fastened to a bounding wall counts as immersed if it lies within: its fastened face's share of
-  // the linear field, which no fluid touches, is then included (one spacing of a thin body).
+  // Immersed: every elastic solid (a beam, a leaflet, a fish: in the fluid, or fastened to a wall,
+  // whose clamp takes the fastened face's load), and a wall whose particles all lie within the
+  // bounding box of the fluid's (a cylinder in a channel), where a wall that bounds the fluid lies
+  // outside it.
   const auto box_of = [](const Vec2Array& pos) {
     Eigen::AlignedBox<Real, 2> box;
     for (const Vec2& x : pos) box.extend(x);
@@ -213,8 +213,8 @@ void Simulation::share_linear_reference_with_immersed_bodies() {
   };
   const auto fluid_box = box_of(fluid_->particles.pos);
   for (std::size_t k = 0; k < contacts_.size(); ++k) {
-    const Vec2Array& pos = k < walls_.size() ? walls_[k].particles.pos : solids_[k - walls_.size()].particles.pos;
-    if (fluid_box.contains(box_of(pos))) contacts_[k].reference_gradient = &fluid_->reference.gradient;
+    const bool immersed = k >= walls_.size() || fluid_box.contains(box_of(walls_[k].particles.pos));
+    if (immersed) contacts_[k].reference_gradient = &fluid_->reference.gradient;
   }
 }
 
