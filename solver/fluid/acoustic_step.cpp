@@ -125,11 +125,10 @@ struct PressureInteraction {
       const Vec2& e = g.gradient_vector();
       return -(s.vol_scaled * vol_j * g.gradient_scale()) *
              ((s.p_relative + fluid.reference.level) * (s.correction * e) + (p_j - fluid.reference.level) * (correction_j * e));
-    } else if constexpr (kLinear) {
-      const Real p_sum = s.p_relative + p_j + fluid.reference.gradient.dot(g.r_ij());
-      return -(s.vol_scaled * vol_j * p_sum * g.gradient_scale()) * g.gradient_vector();
     } else {
-      return -(s.vol_scaled * vol_j * (s.p_relative + p_j) * g.gradient_scale()) * g.gradient_vector();
+      Real p_sum = s.p_relative + p_j;
+      if constexpr (kLinear) p_sum += fluid.reference.gradient.dot(g.r_ij());
+      return -(s.vol_scaled * vol_j * p_sum * g.gradient_scale()) * g.gradient_vector();
     }
   }
 

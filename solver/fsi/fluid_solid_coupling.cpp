@@ -7,11 +7,21 @@
 
 namespace mrsph {
 
+namespace {
+
+// An immersed boundary particle's share -V_a grad p_ref of a linear reference pressure (where
+// FluidContact::reference_gradient is set).
+Vec2 reference_share(const FluidContact& contact, std::size_t a) {
+  return -(*contact.boundary.vol)[a] * *contact.reference_gradient;
+}
+
+}  // namespace
+
 void set_force_from_fluid(const FluidContact& contact, SolidParticles& solid) {
   const bool has_viscous = !contact.pair_viscous_force.empty();
   parallel_for_each(solid.size(), [&](std::size_t a) {
     Vec2 force = contact.boundary_dissipation_reaction[a];
-    if (contact.reference_gradient) force -= (*contact.boundary.vol)[a] * *contact.reference_gradient;
+    if (contact.reference_gradient) force += reference_share(contact, a);
     for_each_pair_of_target(contact.pairs_of_boundary, a, [&](Index k) {
       force -= contact.pair_pressure_force[k];
       if (has_viscous) force -= contact.pair_viscous_force[k];
@@ -24,7 +34,7 @@ Vec2 total_force_on_boundary(const FluidContact& contact) {
   Vec2 total = Vec2::Zero();
   for (const Vec2& f : contact.boundary_dissipation_reaction) total += f;
   if (contact.reference_gradient)
-    for (const Real v : *contact.boundary.vol) total -= v * *contact.reference_gradient;
+    for (std::size_t a = 0; a < contact.boundary.vol->size(); ++a) total += reference_share(contact, a);
   for (const Vec2& f : contact.pair_pressure_force) total -= f;
   for (const Vec2& f : contact.pair_viscous_force) total -= f;
   return total;
