@@ -2,8 +2,8 @@
 the fluid's resolution D/dp (the default scheme and the Riemann momentum dissipation on; h = 1.3 and 1.6 dp), and at
 D/dp = 20 against the transport-velocity coefficient alpha, with the lift's particle-scale noise.
 
-Reads DIRECTORY/diagnosis/schaefer_turek_2d2_wake.csv (run, variant, D_over_dp, Re, ...,
-lift_shedding_amplitude, ..., lift_rms_2-10, ...), the bounds from reference-data/schaefer_turek_cylinder.json;
+Reads DIRECTORY/diagnosis/schaefer_turek_2d2_wake.csv (run, variant, D_over_dp, h_over_dp,
+transport_velocity_alpha, riemann_momentum, Re, ..., lift_shedding_amplitude, ..., lift_rms_2-10, ...), the bounds from reference-data/schaefer_turek_cylinder.json;
 writes DIRECTORY/pressure_schaefer_turek_wake.png.
 Usage: /usr/bin/python3 scripts/plot_schaefer_turek_wake.py reports/pressure
 """
@@ -18,17 +18,18 @@ with open(os.path.join(directory, "diagnosis", "schaefer_turek_2d2_wake.csv")) a
 low, high = project_reference("schaefer_turek_cylinder.json")["2D-2"]["lift_coefficient_max_bounds"]
 
 
-def series(variant_prefix, h_over_dp):
-    points = sorted((float(r["D_over_dp"]), float(r["lift_shedding_amplitude"]))
-                    for r in rows if r["variant"].startswith(variant_prefix) and r["h_over_dp"] == h_over_dp)
+def series(riemann_momentum, h_over_dp):
+    points = sorted((float(r["D_over_dp"]), float(r["lift_shedding_amplitude"])) for r in rows
+                    if r["riemann_momentum"] == riemann_momentum and r["h_over_dp"] == h_over_dp
+                    and r["variant"].startswith(("default", "Riemann")))  # the scenes' settings otherwise
     return list(zip(*points)) if points else ([], [])
 
 
 fig, (left, right) = plt.subplots(1, 2, figsize=(10, 3.8), constrained_layout=True)
 for h_over_dp, style in [("1.3", "o-"), ("1.6", "s--")]:
-    for prefix, label, color in [("default", "default (Riemann dissipation in continuity only)", "C0"),
-                                 ("Riemann momentum", "Riemann momentum dissipation on", "C1")]:
-        x, y = series(prefix, h_over_dp)
+    for riemann_momentum, label, color in [("off", "default (Riemann dissipation in continuity only)", "C0"),
+                                           ("on", "Riemann momentum dissipation on", "C1")]:
+        x, y = series(riemann_momentum, h_over_dp)
         if x:
             left.plot(x, y, style, color=color, ms=4, label=f"{label}, h = {h_over_dp} dp")
 left.axhspan(low, high, color="k", alpha=0.15, label="Schaefer & Turek c_L,max")
@@ -39,8 +40,8 @@ left.set_title("2D-2, c = 10 U0", fontsize=9)
 left.legend(fontsize=7)
 
 alpha_rows = [r for r in rows if r["D_over_dp"] == "20" and r["h_over_dp"] == "1.3" and "alpha" in r["variant"]]
-alpha = sorted((float(r["variant"].split("alpha ")[1].split(")")[0].split(" ")[0]), float(r["lift_shedding_amplitude"]),
-                float(r["lift_rms_2-10"])) for r in alpha_rows)
+alpha = sorted((float(r["transport_velocity_alpha"]), float(r["lift_shedding_amplitude"]), float(r["lift_rms_2-10"]))
+               for r in alpha_rows)
 a, amplitude, noise = zip(*alpha)
 right.plot(a, amplitude, "o-", ms=4, label="c_L amplitude (shedding band)")
 right.plot(a, noise, "s--", ms=4, label="c_L rms at f = 2-10 (particle noise)")
