@@ -9,10 +9,12 @@ import csv
 import os
 import re
 
-from plot_common import plt, save, suite_dir
+from plot_common import plt, project_reference, save, suite_dir
 
-DRAG_2D1 = 5.57953523384  # John & Matthies (2001), Schaefer & Turek's 2D-1
-LIFT_MAX_2D2 = (0.99, 1.01)  # Schaefer & Turek (1996), 2D-2 c_L,max bounds
+# The benchmark's values as the project typed them in (reference-data/schaefer_turek_cylinder.json).
+_benchmark = project_reference("schaefer_turek_cylinder.json")
+DRAG_2D1 = _benchmark["2D-1"]["drag_coefficient"]  # John & Matthies (2001)
+LIFT_MAX_2D2 = tuple(_benchmark["2D-2"]["lift_coefficient_max_bounds"])  # Schaefer & Turek (1996)
 
 directory = suite_dir()
 with open(os.path.join(directory, "diagnosis", "schaefer_turek_cylinder.csv")) as f:
