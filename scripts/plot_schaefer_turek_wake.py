@@ -1,5 +1,5 @@
-"""Figure of reports/pressure.md section 31: Schaefer & Turek's 2D-2 (Re = 100) lift amplitude against
-the fluid's resolution D/dp (the default scheme and the Riemann momentum dissipation on; h = 1.3 and 1.6 dp), and at
+"""Figure of reports/pressure.md sections 31-32: Schaefer & Turek's 2D-2 (Re = 100) lift amplitude against
+the fluid's resolution D/dp (the default scheme and the Riemann momentum dissipation on; h = 1.3, 1.6 and 2.0 dp), and at
 D/dp = 20 against the transport-velocity coefficient alpha, with the lift's particle-scale noise.
 
 Reads DIRECTORY/diagnosis/schaefer_turek_2d2_wake.csv (run, variant, D_over_dp, h_over_dp,
@@ -25,8 +25,8 @@ def series(riemann_momentum, h_over_dp):
     return list(zip(*points)) if points else ([], [])
 
 
-fig, (left, right) = plt.subplots(1, 2, figsize=(10, 3.8), constrained_layout=True)
-for h_over_dp, style in [("1.3", "o-"), ("1.6", "s--")]:
+fig, (left, right) = plt.subplots(1, 2, figsize=(10, 4.6), constrained_layout=True)
+for h_over_dp, style in [("1.3", "o-"), ("1.6", "s--"), ("2.0", "^:")]:
     for riemann_momentum, label, color in [("off", "default (Riemann dissipation in continuity only)", "C0"),
                                            ("on", "Riemann momentum dissipation on", "C1")]:
         x, y = series(riemann_momentum, h_over_dp)
@@ -37,7 +37,7 @@ left.set_xlabel("D / dp")
 left.set_ylabel("c_L amplitude (shedding band), t = 40-60")
 left.set_xticks([20, 30, 40])
 left.set_title("2D-2, c = 10 U0", fontsize=9)
-left.legend(fontsize=7)
+left.legend(fontsize=6.5, loc="upper center", bbox_to_anchor=(0.5, -0.16), ncol=2)
 
 alpha_rows = [r for r in rows if r["D_over_dp"] == "20" and r["h_over_dp"] == "1.3" and "alpha" in r["variant"]]
 alpha = sorted((float(r["transport_velocity_alpha"]), float(r["lift_shedding_amplitude"]), float(r["lift_rms_2-10"]))
