@@ -82,9 +82,14 @@ SweepRun fsi2_sweep_run(const FsiCase& c, double end_time) {
     r.label += fmt::format(", c = {} U0", c.sound_speed_factor);
     r.overrides.push_back(fmt::format("parameters.sound_speed={} * U0", c.sound_speed_factor));
   }
+  if (c.fluid_h_over_dp > 0.0) {
+    r.label += fmt::format(", h = {:g} dp_F", c.fluid_h_over_dp);
+    r.overrides.push_back(fmt::format("fluid.h_over_dp={:g}", c.fluid_h_over_dp));
+  }
   r.end_time = end_time;
   r.config = {{"case", c.name}, {"ratio", c.ratio}, {"resolution", c.resolution}, {"schedule", c.schedule},
               {"sound_speed_factor", c.sound_speed_factor}};
+  if (c.fluid_h_over_dp > 0.0) r.config["fluid_h_over_dp"] = c.fluid_h_over_dp;
   return r;
 }
 
@@ -177,7 +182,8 @@ std::vector<FsiCase> fsi2_cases(const SuiteContext& ctx) {
           {"IV", 2, 4, "single_step_position_verlet"},
           {"V", 4, 8, "multi_step_position_verlet"},
           {"III-c20", 2, 4, "multi_step_position_verlet", 20},
-          {"III-c40", 2, 4, "multi_step_position_verlet", 40}};
+          {"III-c40", 2, 4, "multi_step_position_verlet", 40},
+          {"III-h2", 2, 4, "multi_step_position_verlet", 10, 2.0}};
 }
 
 // One case at a time in-process (ctx.threads each; always so for the single quick case, and with
@@ -215,6 +221,20 @@ void check_sound_speed_independence(const std::map<std::string, FsiResult>& resu
   }
 }
 
+// Nor on the fluid's kernel width, another numerical parameter: at h = 2.0 dp_F instead of 1.3 the
+// beam's amplitude within 3 % (the precision issue 17 asks of A_y/D against Turek & Hron; the cycles'
+// spread is 2.3 %) and St within 2 % (issue 17's precision for St). Measured: 0.4 % and 0.0 %, where the
+// cylinders' drag at one D/dp moves by 2-8 % with h (reports/pressure.md section 33).
+void check_kernel_width_independence(const std::map<std::string, FsiResult>& results, SuiteSummary& summary) {
+  if (!results.count("III-h2")) return;  // said where the run is missing
+  const std::string source = "issue 17: independence of a numerical parameter; pressure.md section 33";
+  const FsiResult &paper = results.at("III"), &wide = results.at("III-h2");
+  const std::map<std::string, double> tolerance{{"amplitude_y", 0.03}, {"strouhal", 0.02}};
+  for (const auto& [m, tol] : tolerance)
+    summary.check_at_most(fmt::format("case III {}: |h = 2.0 dp_F / h = 1.3 dp_F - 1|", m),
+                          std::abs(metric(wide, m.c_str()) / metric(paper, m.c_str()) - 1.0), tol, source);
+}
+
 // Case III against the published range (quick: while the oscillation grows), the multiple steps'
 // speed-up and case III's wall time.
 void check_case_iii(const SuiteContext& ctx, const std::map<std::string, FsiResult>& results, bool in_process,
@@ -244,6 +264,7 @@ void check_case_iii(const SuiteContext& ctx, const std::map<std::string, FsiResu
                           results.at("IV").wall_s / III.wall_s, 1.0, 1e9,
                           "issue 4: multiple steps beat the single step by a measured factor (paper: 1.8)");
     check_sound_speed_independence(results, summary);
+    check_kernel_width_independence(results, summary);
     if (in_process && ctx.threads == 2)
       summary.check_at_most("case III wall time to t = 200 on 2 threads [s]", III.wall_s, 60.0,
                             "issue 4 acceptance; the paper's code takes about 100 s here (runs-here)");
