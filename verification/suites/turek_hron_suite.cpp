@@ -223,7 +223,7 @@ void check_sound_speed_independence(const std::map<std::string, FsiResult>& resu
 
 // Nor on the fluid's kernel width, another numerical parameter: at h = 2.0 dp_F instead of 1.3 the
 // beam's amplitude within 3 % (the precision issue 17 asks of A_y/D against Turek & Hron; the cycles'
-// spread is 2.3 %) and St within 2 % (issue 17's precision for St). Measured: 0.4 % and 0.0 %, where the
+// spread is 2.3 %) and St within 2 % (issue 17's precision for CFD3's St). Measured: 0.4 % and 0.0 %, where the
 // cylinders' drag at one D/dp moves by 2-8 % with h (reports/pressure.md section 33).
 void check_kernel_width_independence(const std::map<std::string, FsiResult>& results, SuiteSummary& summary) {
   if (!results.count("III-h2")) return;  // said where the run is missing
