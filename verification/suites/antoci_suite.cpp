@@ -36,7 +36,6 @@ struct GateCase {
   std::optional<double> fluid_h_over_dp{};  // the fluid's smoothing length h / dp_F; the scene's (1.3) if not given
 };
 
-
 // The largest value of a curve and when it occurs (the experiment's peak, computed from its curve).
 struct Peak {
   double value = NAN, time = NAN;
