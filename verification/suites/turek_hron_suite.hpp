@@ -3,6 +3,8 @@
 #include "suites/suite.hpp"
 #include "sweep/sweep.hpp"
 
+#include <optional>
+
 namespace mrsph::verification {
 
 // A case of the FSI2 benchmark (the paper's Table 1).
@@ -12,7 +14,7 @@ struct FsiCase {
   int resolution;
   std::string schedule;
   int sound_speed_factor = 10;  // c / U0; the scene's (the paper's) 10 adds no override
-  double fluid_h_over_dp = 0.0;  // the fluid's smoothing length h / dp_F; 0: the scene's (the paper's 1.3), no override
+  std::optional<double> fluid_h_over_dp{};  // the fluid's smoothing length h / dp_F; the scene's (the paper's 1.3) if not given
 };
 
 // The sweep entry of a case: the overrides the turek-hron suite uses, so runs are shared.
