@@ -33,6 +33,15 @@ constexpr int kExitInterrupted = 4;
 std::atomic<bool> g_stop_requested{false};
 extern "C" void request_stop(int) { g_stop_requested.store(true); }
 
+// How the viscous force continues the velocity into the walls.
+const char* viscous_wall_velocity_description(mrsph::ViscousWallVelocity rule) {
+  switch (rule) {
+    case mrsph::ViscousWallVelocity::Mirrored: return "mirrored (the paper's)";
+    case mrsph::ViscousWallVelocity::Quadratic: return "continued as a parabola (the wall's momentum balance)";
+    default: return "continued linearly into the wall";
+  }
+}
+
 // What the fluid's pressure forces are measured from, divided by and continued into the walls with.
 std::string pressure_forces_description(const mrsph::Simulation& sim) {
   const auto& f = sim.fluid();
@@ -75,7 +84,7 @@ void print_scene(const mrsph::LoadedScene& scene) {
                f.riemann.momentum ? "on" : "off",
                f.options.delta_sph > 0.0 ? fmt::format("delta {:g}", f.options.delta_sph) : std::string("off"),
                f.options.refresh_pair_geometry ? "at each acoustic step" : "cached per advection step",
-               f.options.mirrored_wall_velocity ? "mirrored (the paper's)" : "continued linearly into the wall",
+               viscous_wall_velocity_description(f.options.viscous_wall_velocity),
                f.options.mirrored_wall_continuity ? "mirrored (the paper's)" : "the boundary's (the summation's derivative)",
                100.0 * mrsph::smallest_support_fraction(f, sim.fluid_inner(), sim.fluid_contacts()));
   }

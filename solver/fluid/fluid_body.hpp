@@ -42,6 +42,9 @@ enum class DensityReinitialisation {
 //         sections 29 and 30; fluid/reference_pressure.hpp)
 enum class PressureReference { Zero, Mean, Linear, Automatic };
 
+// How the viscous force's wall term continues the velocity into a boundary (wall_rules.hpp).
+enum class ViscousWallVelocity { Linear, Mirrored, Quadratic };
+
 struct FluidOptions {
   DensityReinitialisation density = DensityReinitialisation::Internal;
   PressureReference pressure_reference = PressureReference::Zero;
@@ -101,10 +104,11 @@ struct FluidOptions {
   // beside a side wall) keeps the particle's pressure: a submerged cylinder's buoyancy 2.2-4.1 %
   // high at every c (reports/pressure.md section 19).
   bool rest_state_at_walls = false;
-  // The viscous force's wall term with the paper's mirrored velocity 2 (v_i - vbar_a); off (the
-  // default): the velocity continued linearly through the wall (wall_rules.hpp), with which a
-  // channel's profile converges at second order instead of 0.6 (reports/pressure.md section 20).
-  bool mirrored_wall_velocity = false;
+  // The viscous force's wall term (wall_rules.hpp): Linear (the default), the velocity continued
+  // linearly through the wall, with which a channel's profile converges at second order instead of
+  // 0.6 (reports/pressure.md section 20); Mirrored, the paper's 2 (v_i - vbar_a); Quadratic, continued
+  // as a parabola whose curvature is the wall's momentum balance (reports/pressure.md section 34).
+  ViscousWallVelocity viscous_wall_velocity = ViscousWallVelocity::Linear;
   // The continuity equation's wall term with the paper's mirrored velocity 2 (v_i - vbar_a); off:
   // v_i - vbar_a, the time derivative of the density summation's wall term (wall_rules.hpp), so that
   // the re-initialisation does not set the density back next to a moving body by a jump that grows
@@ -167,6 +171,7 @@ struct FluidContact {
   // Each fluid particle's distance above the boundary's surface, from its nearest boundary particle
   // (wall_rules.hpp), set with the viscous force; for the particles with pairs in this contact.
   RealArray fluid_distance;
+  Vec2Array fluid_wall_normal;  // with it, that particle's normal (the wall's tangent for the quadratic rule)
   Vec2Array pair_dissipation_force;   // Riemann momentum dissipation, written in the second half
   // With the fluid's refresh_pair_geometry, for a moving boundary (boundary.pos set): its positions at
   // the list build, and its displacement since then (set before each pressure pass).

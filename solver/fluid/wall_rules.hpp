@@ -3,7 +3,7 @@
 //
 //   velocity   the no-slip mirror: the fluid's velocity relative to the boundary's averaged
 //              velocity, doubled (paper Eqs. 29 and 31, of the Riemann momentum dissipation, and
-//              of the viscous force with the fluid's mirrored_wall_velocity; Adami et al. 2012):
+//              of the viscous force with the fluid's Mirrored wall velocity; Adami et al. 2012):
 //                                                                    2 (v_i - vbar_a)
 //   continuity the wall term of the continuity equation, rho_i sum_a V_a (v_i - v^d_a).e_ia W'_ia.
 //              Where the density is re-initialised by summation, the dummy moves with the
@@ -29,6 +29,17 @@
 //              0.6 with it, about 2 with the continuation: reports/pressure.md section 20). d_i is
 //              floored at dp / 4, so that a fluid particle pressed against the wall does not
 //              amplify its velocity without bound.
+//              The fluid's quadratic rule (an option) continues it as the parabola through vbar_a
+//              and v_i whose curvature along the wall is the one the wall's momentum balance gives:
+//              where the fluid sticks to the wall (v = vbar_a), Navier-Stokes leaves
+//                nu d^2 v_t / dn^2 = (abar_a - a^p - b)_t          (t: along the wall, n: normal)
+//              (a^p the pressure acceleration, b the body force; the normal part is left out), so
+//              the dummy moves with the linear rule's velocity plus kappa d_a (d_i + d_a) / 2:
+//                                  (1 + d_a / d_i) (v_i - vbar_a) - kappa d_a (d_i + d_a) / 2
+//              exact for a parabolic profile (a channel driven by a body force: Womersley's error
+//              2-17 times smaller, reports/pressure.md section 34), where the linear rule's wall
+//              slips by kappa d_a d_i / 2 (d_i, d_a up to 2 h). Its a^p is the particle's, so the
+//              pressure's particle noise enters the wall term with it.
 //   pressure   extrapolated from the fluid particle to the dummy particle (paper Eq. 30; Adami et
 //              al. 2012), with the boundary's averaged acceleration. With the fluid's
 //              rest_state_at_walls the rest state's pressure gradient G = rho0 b (b: the body force
@@ -63,6 +74,17 @@ inline Vec2 wall_continuity_velocity_difference(const Vec2& v_i, const Vec2& vba
 // d_i: the fluid particle's distance above the surface (wall_distance_from_nearest), already floored.
 inline Vec2 wall_viscous_velocity_difference(const Vec2& v_i, const Vec2& vbar_a, Real d_i, Real d_a) {
   return (1.0 + d_a / d_i) * (v_i - vbar_a);
+}
+
+// kappa: the profile's curvature along the wall, -(drive - (drive . n) n) / nu, with
+// drive = a^p_i + b - abar_a and n the wall's normal (above).
+inline Vec2 wall_profile_curvature(const Vec2& drive, const Vec2& n, Real nu) {
+  return -(drive - drive.dot(n) * n) / nu;
+}
+
+// What the quadratic rule adds to v_i - v^d_a (above).
+inline Vec2 wall_viscous_curvature_difference(const Vec2& curvature, Real d_i, Real d_a) {
+  return (-0.5 * d_a * (d_i + d_a)) * curvature;
 }
 
 // d_i from the boundary particle a nearest to i (e_ia from a to i, r_ia their distance, n_a its

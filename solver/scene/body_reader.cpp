@@ -91,8 +91,10 @@ void read_fluid_options(const SceneNode& node, FluidOptions& o) {
   if (o.pressure_gradient_correction && node.has("pressure_lattice_correction") && o.pressure_lattice_correction)
     node.fail("pressure_lattice_correction", "the kernel-gradient correction includes the lattice's moment; "
                                              "expected pressure_lattice_correction false (or absent) with pressure_gradient_correction");
-  o.mirrored_wall_velocity =
-      node.choice_or("viscous_wall_velocity", {"extrapolated", "mirrored"}, "extrapolated") == "mirrored";
+  const std::string wall_velocity = node.choice_or("viscous_wall_velocity", {"extrapolated", "mirrored", "quadratic"}, "extrapolated");
+  o.viscous_wall_velocity = wall_velocity == "mirrored"    ? ViscousWallVelocity::Mirrored
+                            : wall_velocity == "quadratic" ? ViscousWallVelocity::Quadratic
+                                                           : ViscousWallVelocity::Linear;
   if (o.measured_pressure_moment && node.has("pressure_lattice_correction") && !o.pressure_lattice_correction)
     node.fail("measured_pressure_moment", "it is the moment the pressure lattice correction divides by; "
                                           "expected pressure_lattice_correction true (or left to the flow) with it");

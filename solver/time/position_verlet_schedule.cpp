@@ -56,7 +56,7 @@ Real PositionVerletSchedule::advance(Simulation& sim, Real max_step) {
   // Algorithm 1, once per advection step.
   reinitialise_density(fluid, inner, contacts, fluid.options.density_relaxation);
   sim.impose_boundary_states(0.0);
-  compute_viscous_force_and_transport_shift(fluid, inner, contacts);
+  compute_viscous_force_and_transport_shift(fluid, inner, contacts, sim.fluid_body_acceleration(t0));
   for (SolidBody& solid : sim.solids()) update_solid_normals(solid);
 
   Real elapsed = 0.0, step_length = Dt;

@@ -45,7 +45,7 @@ Real VelocityVerletSchedule::advance(Simulation& sim, Real max_step) {
 
   reinitialise_density(fluid, inner, contacts, fluid.options.density_relaxation);
   sim.impose_boundary_states(0.0);
-  compute_viscous_force_and_transport_shift(fluid, inner, contacts);
+  compute_viscous_force_and_transport_shift(fluid, inner, contacts, sim.fluid_body_acceleration(t0));
   for (SolidBody& solid : sim.solids()) update_solid_normals(solid);
   // The pair lists were rebuilt: forces of the current state on the new lists.
   advance_density_and_position(fluid, 0.0, 0.0);
