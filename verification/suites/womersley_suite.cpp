@@ -47,15 +47,17 @@ WomersleyProfile profile_from(const LoadedScene& scene) {
   return w;
 }
 
-WomersleyRun run_case(const SuiteContext& ctx, double wo, int resolution, SuiteSummary& summary) {
-  const std::string name = fmt::format("Wo={:g} H/dp={}", wo, resolution);
+// wall_rule: the scene's viscous wall velocity, or another (fluid.viscous_wall_velocity) named in the case.
+WomersleyRun run_case(const SuiteContext& ctx, double wo, int resolution, SuiteSummary& summary,
+                      const std::string& wall_rule = "") {
+  const std::string name = fmt::format("Wo={:g} H/dp={}{}", wo, resolution, wall_rule.empty() ? "" : " " + wall_rule + " wall rule");
   if (ctx.log) ctx.log("womersley: " + name);
   WomersleyRun out{wo, resolution, {}, false};
   CsvTable profiles;
   profiles.columns = {"phase", "time", "y", "u_sph", "u_analytic"};
 
-  const std::vector<std::string> overrides{fmt::format("parameters.Wo={}", wo),
-                                           fmt::format("parameters.resolution={}", resolution)};
+  std::vector<std::string> overrides{fmt::format("parameters.Wo={}", wo), fmt::format("parameters.resolution={}", resolution)};
+  if (!wall_rule.empty()) overrides.push_back(fmt::format(R"(fluid.viscous_wall_velocity="{}")", wall_rule));
   SceneRun run = run_scene(ctx, "womersley.json", overrides, [&](const LoadedScene& scene) {
     const WomersleyProfile analytic = profile_from(scene);
     const double period = 2.0 * M_PI / analytic.angular_frequency;
@@ -89,13 +91,14 @@ WomersleyRun run_case(const SuiteContext& ctx, double wo, int resolution, SuiteS
     return options;
   });
   out.diverged = run.result.divergence.has_value();
-  profiles.write(ctx.out_dir / fmt::format("profiles_Wo{:g}_res{}.csv", wo, resolution));
+  profiles.write(ctx.out_dir / fmt::format("profiles_Wo{:g}_res{}{}.csv", wo, resolution, wall_rule.empty() ? "" : "_" + wall_rule));
 
   SuiteRun record;
   record.case_name = name;
   record.config = {{"womersley_number", wo}, {"resolution", resolution}, {"dp", run.scene.parameters.at("dp")},
                    {"kinematic_viscosity", run.scene.parameters.at("nu")}, {"phases", kPhases},
-                   {"schedule", run.scene.schedule->name()}, {"scene", "womersley.json"}};
+                   {"schedule", run.scene.schedule->name()}, {"scene", "womersley.json"},
+                   {"viscous_wall_velocity", wall_rule.empty() ? "the scene's" : wall_rule}};
   record.metrics = {{"l2_error", out.error.l2()}, {"vertical_velocity_ratio", out.error.vertical_ratio()},
                     {"samples", out.error.samples}};
   record.cost = cost_json(run);
@@ -128,6 +131,21 @@ SuiteSummary run_womersley_suite(const SuiteContext& ctx) {
     const std::string check = fmt::format("Wo={:g} l2_error at H/dp={}", wo, checked);
     if (r.diverged) summary.check_missing(check, "the run diverged", source);
     else summary.check_at_most(check, r.error.l2(), tolerance, source);
+
+    // Full mode: the quadratic wall rule (an option) beside the default at the checked resolution.
+    // At Wo = 1 the profile is within 2 % of the steady parabola, which that rule continues into the
+    // wall exactly where the linear one slips by kappa d_a d_i / 2 (fluid/wall_rules.hpp): the slip is
+    // most of the default's error (reports/pressure.md section 34: 0.097 -> 0.046 % at H/dp = 40), so
+    // the quadratic rule's error must stay below three quarters of the default's.
+    if (!ctx.quick) {
+      const WomersleyRun quadratic = run_case(ctx, wo, checked, summary, "quadratic");
+      if (wo == 1.0) {
+        const std::string name = fmt::format("Wo=1 quadratic wall rule against the default at H/dp={} (error ratio)", checked);
+        const std::string why = "the linear wall rule's slip is most of Wo = 1's error (reports/pressure.md section 34)";
+        if (quadratic.diverged || r.diverged) summary.check_missing(name, "a run diverged", why);
+        else summary.check_at_most(name, quadratic.error.l2() / r.error.l2(), 0.75, why);
+      }
+    }
 
     Json row = {{"womersley_number", wo}};
     for (const auto& [res, run] : runs) row[fmt::format("l2_error_res{}", res)] = run.error.l2();
