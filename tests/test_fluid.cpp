@@ -29,6 +29,19 @@ std::string periodic_box(const std::string& fluid_extra = "", const std::string&
     "end_time": 0.2)" + extra + "}";
 }
 
+// The fluid on 0 < y < 1 between a floor and a lid, periodic in x, viscosity 0.3, with the viscous
+// wall rule `rule` (fluid.viscous_wall_velocity).
+std::string walled_channel(const std::string& rule) {
+  return R"json({
+    "parameters": {"dp": 0.05},
+    "domain": {"lower": [0, -0.25], "upper": [1, 1.25], "periodic": [true, false]},
+    "fluid": {"dp": "dp", "region": {"rectangle": {"lower": [0, 0], "upper": [1, 1]}},
+              "density": 1, "sound_speed": 10, "viscosity": 0.3, "viscous_wall_velocity": ")json" + rule + R"json("},
+    "walls": [{"name": "floor", "dp": "dp", "region": {"rectangle": {"lower": [0, -0.2], "upper": [1, 0]}}},
+              {"name": "lid", "dp": "dp", "region": {"rectangle": {"lower": [0, 1], "upper": [1, 1.2]}}}],
+    "end_time": 1})json";
+}
+
 Vec2 fluid_momentum(const Simulation& sim) {
   const FluidParticles& f = sim.fluid().particles;
   Vec2 m = Vec2::Zero();
@@ -313,14 +326,7 @@ TEST_CASE("The viscous wall rule continues a linear shear into the wall exactly;
   // particle -d_a, the mirror -y_i whatever its depth: the first row gets too little shear from the
   // deeper dummies, the second too much (a slip of order dp; reports/pressure.md section 20).
   for (const std::string rule : {"extrapolated", "mirrored"}) {
-    LoadedScene s = scene_from(R"json({
-      "parameters": {"dp": 0.05},
-      "domain": {"lower": [0, -0.25], "upper": [1, 1.25], "periodic": [true, false]},
-      "fluid": {"dp": "dp", "region": {"rectangle": {"lower": [0, 0], "upper": [1, 1]}},
-                "density": 1, "sound_speed": 10, "viscosity": 0.3, "viscous_wall_velocity": ")json" + rule + R"json("},
-      "walls": [{"name": "floor", "dp": "dp", "region": {"rectangle": {"lower": [0, -0.2], "upper": [1, 0]}}},
-                {"name": "lid", "dp": "dp", "region": {"rectangle": {"lower": [0, 1], "upper": [1, 1.2]}}}],
-      "end_time": 1})json");
+    LoadedScene s = scene_from(walled_channel(rule));
     Simulation& sim = *s.simulation;
     FluidParticles& f = sim.fluid().particles;
     for (std::size_t i = 0; i < f.size(); ++i) f.vel[i] = Vec2(f.pos[i].y(), 0.0);
@@ -344,14 +350,7 @@ TEST_CASE("The quadratic viscous wall rule continues a body-force-driven parabol
   // Laplacian there short by a sizeable fraction of 2 U.
   const double U = 1.0, nu = 0.3, b = 2.0 * nu * U;
   for (const std::string rule : {"quadratic", "extrapolated"}) {
-    LoadedScene s = scene_from(R"json({
-      "parameters": {"dp": 0.05},
-      "domain": {"lower": [0, -0.25], "upper": [1, 1.25], "periodic": [true, false]},
-      "fluid": {"dp": "dp", "region": {"rectangle": {"lower": [0, 0], "upper": [1, 1]}},
-                "density": 1, "sound_speed": 10, "viscosity": 0.3, "viscous_wall_velocity": ")json" + rule + R"json("},
-      "walls": [{"name": "floor", "dp": "dp", "region": {"rectangle": {"lower": [0, -0.2], "upper": [1, 0]}}},
-                {"name": "lid", "dp": "dp", "region": {"rectangle": {"lower": [0, 1], "upper": [1, 1.2]}}}],
-      "end_time": 1})json");
+    LoadedScene s = scene_from(walled_channel(rule));
     Simulation& sim = *s.simulation;
     FluidParticles& f = sim.fluid().particles;
     for (std::size_t i = 0; i < f.size(); ++i) f.vel[i] = Vec2(U * f.pos[i].y() * (1.0 - f.pos[i].y()), 0.0);
