@@ -346,7 +346,7 @@ TEST_CASE("The quadratic viscous wall rule continues a body-force-driven parabol
   // periodic x: the steady channel's profile (Poiseuille). The wall's momentum balance gives the
   // curvature nu u'' = -b, and the quadratic rule continues u into the walls as that parabola: the
   // lattice-corrected operator then returns u'' = -2 U on the rows next to the walls as in the bulk.
-  // The linear continuation gives each dummy U d_a d_i too much (wall_rules.hpp): a slip, its
+  // The linear continuation gives each dummy U d_a (d_i + d_a) too much (wall_rules.hpp): a slip, its
   // Laplacian there short by a sizeable fraction of 2 U.
   const double U = 1.0, nu = 0.3, b = 2.0 * nu * U;
   for (const std::string rule : {"quadratic", "extrapolated"}) {

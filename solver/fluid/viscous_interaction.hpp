@@ -37,7 +37,7 @@ struct ViscousInteraction {
   void after_inner(std::size_t i, Vec2& sum) const { sum = 2.0 * mu * f.vol[i] * sum; }
   Side boundary(std::size_t c) const {
     FluidContact& contact = contacts[c];
-    return {*contact.boundary.vol,  *contact.boundary.vel_ave,  *contact.boundary.depth, contact.fluid_distance,
+    return {*contact.boundary.vol, *contact.boundary.vel_ave, *contact.boundary.depth, contact.fluid_distance,
             contact.fluid_wall_normal, *contact.boundary.acc_ave, contact.pair_viscous_force};
   }
   void contact(Vec2& force, std::size_t i, const Side& b, Index k, const Neighbor& n) const {

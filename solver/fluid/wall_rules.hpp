@@ -37,9 +37,9 @@
 //              the dummy moves with the linear rule's velocity plus kappa d_a (d_i + d_a) / 2:
 //                                  (1 + d_a / d_i) (v_i - vbar_a) - kappa d_a (d_i + d_a) / 2
 //              exact for a parabolic profile (a channel driven by a body force: Womersley's error
-//              2-17 times smaller, reports/pressure.md section 34), where the linear rule's wall
-//              slips by kappa d_a d_i / 2 (d_i, d_a up to 2 h). Its a^p is the particle's, so the
-//              pressure's particle noise enters the wall term with it.
+//              2-17 times smaller at H/dp = 20-40, reports/pressure.md section 34), where the linear
+//              rule's wall slips by -kappa d_a (d_i + d_a) / 2 (d_i, d_a up to 2 h). Its a^p is the
+//              particle's, so the pressure's noise enters the wall term with it.
 //   pressure   extrapolated from the fluid particle to the dummy particle (paper Eq. 30; Adami et
 //              al. 2012), with the boundary's averaged acceleration. With the fluid's
 //              rest_state_at_walls the rest state's pressure gradient G = rho0 b (b: the body force
