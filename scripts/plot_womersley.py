@@ -33,7 +33,13 @@ fig, ax = plt.subplots(figsize=(5, 4))
 for row in summary["convergence"]:
     res = sorted(int(k.split("res")[1]) for k in row if k.startswith("l2_error_res"))
     err = [row[f"l2_error_res{r}"] for r in res]
-    ax.loglog(res, err, "o-", label=f"Wo = {row['womersley_number']:g} (order {row['observed_order']:.2f})")
+    line, = ax.loglog(res, err, "o-", label=f"Wo = {row['womersley_number']:g} (order {row['observed_order']:.2f})")
+    for run in summary["runs"]:  # full mode: the quadratic wall rule beside the default
+        config = run.get("config", {})
+        if config.get("viscous_wall_velocity") == "quadratic" and config.get("womersley_number") == row["womersley_number"]:
+            ax.loglog([config["resolution"]], [run["metrics"]["l2_error"]], "s", mfc="none", color=line.get_color())
+if any(run.get("config", {}).get("viscous_wall_velocity") == "quadratic" for run in summary["runs"]):
+    ax.loglog([], [], "ks", mfc="none", label="quadratic wall rule")
 r0 = min(res)
 ax.loglog([r0, 4 * r0], [0.08, 0.08 / 16], "k--", lw=0.8, label="slope -2")
 ax.set_xlabel("H / dp")
