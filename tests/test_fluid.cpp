@@ -91,7 +91,7 @@ TEST_CASE("The viscous operator is exact for a quadratic field on a lattice (wit
     FluidParticles& f = sim.fluid().particles;
     // u = y^2 / 2 has Laplacian 1; use only particles whose whole support avoids the periodic seam.
     for (std::size_t i = 0; i < f.size(); ++i) f.vel[i] = Vec2(0.5 * f.pos[i].y() * f.pos[i].y(), 0.0);
-    compute_viscous_force(sim.fluid(), sim.fluid_inner(), sim.fluid_contacts());
+    compute_viscous_force(sim.fluid(), sim.fluid_inner(), sim.fluid_contacts(), Vec2::Zero());
     const double h = sim.fluid().h();
     for (std::size_t i = 0; i < f.size(); ++i) {
       if (f.pos[i].y() < 2.5 * h || f.pos[i].y() > 1.0 - 2.5 * h) continue;
@@ -330,7 +330,7 @@ TEST_CASE("The viscous wall rule continues a linear shear into the wall exactly;
     Simulation& sim = *s.simulation;
     FluidParticles& f = sim.fluid().particles;
     for (std::size_t i = 0; i < f.size(); ++i) f.vel[i] = Vec2(f.pos[i].y(), 0.0);
-    compute_viscous_force(sim.fluid(), sim.fluid_inner(), sim.fluid_contacts());
+    compute_viscous_force(sim.fluid(), sim.fluid_inner(), sim.fluid_contacts(), Vec2::Zero());
     const double h = sim.fluid().h(), shear_over_dp = 1.0 / 0.05;
     double largest = 0.0;  // the operator's Laplacian of u on the rows within the floor's reach
     for (std::size_t i = 0; i < f.size(); ++i)
@@ -627,7 +627,7 @@ TEST_CASE("The viscous force and the shift in one sweep give the bits of the two
   Simulation& a = *apart.simulation;
   Simulation& b = *together.simulation;
   const Vec2Array before = b.fluid().particles.pos;
-  compute_viscous_force(a.fluid(), a.fluid_inner(), a.fluid_contacts());
+  compute_viscous_force(a.fluid(), a.fluid_inner(), a.fluid_contacts(), Vec2::Zero());
   correct_transport_velocity(a.fluid(), a.fluid_inner(), a.fluid_contacts());
   compute_viscous_force_and_transport_shift(b.fluid(), b.fluid_inner(), b.fluid_contacts(), Vec2::Zero());
   const FluidParticles& fa = a.fluid().particles;

@@ -16,7 +16,9 @@
 
 namespace mrsph {
 
+// body_acceleration: b at the advection step's start (the quadratic wall rule's drive; no default, so
+// that a caller cannot drop it silently).
 void compute_viscous_force(FluidBody& fluid, const NeighborList& inner, std::vector<FluidContact>& contacts,
-                           const Vec2& body_acceleration = Vec2::Zero());
+                           const Vec2& body_acceleration);
 
 }  // namespace mrsph
