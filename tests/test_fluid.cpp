@@ -645,6 +645,33 @@ TEST_CASE("The viscous force and the shift in one sweep give the bits of the two
   CHECK(largest_shift > 0.0);
 }
 
+TEST_CASE("The transport-velocity shift per unit time does not depend on an advection CFL below the paper's", "[fluid]") {
+  // The same disordered box shifted once at CFL 0.25, 0.0625 and 0.5 (the advection step is CFL h / U):
+  // a quarter of the displacement in a quarter of the step, and the paper's displacement above 0.25
+  // (reports/pressure.md section 35).
+  const auto shifted = [](double cfl) {
+    LoadedScene s = scene_from(periodic_box(fmt::format(R"(, "transport_velocity_alpha": 0.25, "advection_cfl": {})", cfl)));
+    FluidParticles& f = s.simulation->fluid().particles;
+    std::mt19937 gen(3);
+    std::uniform_real_distribution<double> jitter(-0.01, 0.01);
+    for (Vec2& x : f.pos) x += Vec2(jitter(gen), jitter(gen));
+    s.simulation->rebuild_fluid_relations();
+    const Vec2Array before = f.pos;
+    correct_transport_velocity(s.simulation->fluid(), s.simulation->fluid_inner(), s.simulation->fluid_contacts());
+    Vec2Array shift(f.size());
+    for (std::size_t i = 0; i < f.size(); ++i) shift[i] = f.pos[i] - before[i];
+    return shift;
+  };
+  const Vec2Array paper = shifted(0.25), small = shifted(0.0625), large = shifted(0.5);
+  double largest = 0.0;
+  for (std::size_t i = 0; i < paper.size(); ++i) {
+    REQUIRE((small[i] - 0.25 * paper[i]).norm() <= 1e-15);  // positions near 1: round-off of the difference
+    REQUIRE(large[i] == paper[i]);
+    largest = std::max(largest, paper[i].norm());
+  }
+  CHECK(largest > 1e-4);  // the jitter of 0.2 dp is shifted by more than round-off
+}
+
 TEST_CASE("Next to a wall the continuity equation carries the density as the summation moves it; the mirror twice as fast", "[fluid]") {
   // wall_rules.hpp: a fluid moving as a whole towards a wall changes its summation density only through
   // the wall's kernel sums. The summation's rule makes the continuity equation's wall term the time

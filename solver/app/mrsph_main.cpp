@@ -1,6 +1,7 @@
 // mrsph: runs any scene file. See `mrsph --help`.
 #include "core/thread_limit.hpp"
 #include "fluid/density_summation.hpp"
+#include "fluid/transport_velocity.hpp"
 #include "io/atomic_file.hpp"
 #include "scene/scene_loader.hpp"
 #include "run/checkpoint.hpp"
@@ -42,6 +43,15 @@ const char* viscous_wall_velocity_description(mrsph::ViscousWallVelocity rule) {
   }
 }
 
+// The transport-velocity shift's coefficient per advection step, and alpha where the CFL scaled it.
+std::string transport_shift_description(const mrsph::FluidOptions& o) {
+  if (o.transport_velocity_alpha == 0.0) return "off";
+  const mrsph::Real per_step = mrsph::shift_alpha_per_step(o);
+  if (per_step == o.transport_velocity_alpha) return fmt::format("alpha {:g} per advection step", per_step);
+  return fmt::format("alpha {:g} per advection step ({:g} scaled by the advection CFL {:g} / {:g})", per_step,
+                     o.transport_velocity_alpha, o.advection_cfl, mrsph::kPaperAdvectionCfl);
+}
+
 // What the fluid's pressure forces are measured from, divided by and continued into the walls with.
 std::string pressure_forces_description(const mrsph::Simulation& sim) {
   const auto& f = sim.fluid();
@@ -71,7 +81,7 @@ void print_scene(const mrsph::LoadedScene& scene) {
     const bool continuity = f.options.density == mrsph::DensityReinitialisation::None;
     fmt::print("           {} fluid: density by {}; pressure forces from {}; Riemann dissipation in continuity {}, in"
                " momentum {}; delta-SPH diffusion {}; pressure pass's pair geometry {}; viscous wall velocity {};"
-               " continuity's wall velocity {}; emptiest kernel support {:.0f} % filled\n",
+               " continuity's wall velocity {}; transport-velocity shift {}; emptiest kernel support {:.0f} % filled\n",
                free_surface ? "free-surface" : sim.open_boundaries.empty() ? "confined" : "open (inlet/outlet)",
                continuity                               ? std::string("the continuity equation")
                : f.options.density_relaxation == 1.0 ? std::string("summation each advection step")
@@ -86,6 +96,7 @@ void print_scene(const mrsph::LoadedScene& scene) {
                f.options.refresh_pair_geometry ? "at each acoustic step" : "cached per advection step",
                viscous_wall_velocity_description(f.options.viscous_wall_velocity),
                f.options.mirrored_wall_continuity ? "mirrored (the paper's)" : "the boundary's (the summation's derivative)",
+               transport_shift_description(f.options),
                100.0 * mrsph::smallest_support_fraction(f, sim.fluid_inner(), sim.fluid_contacts()));
   }
   for (const auto& b : sim.open_boundaries)

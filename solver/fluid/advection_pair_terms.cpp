@@ -13,7 +13,7 @@ namespace mrsph {
 
 void compute_viscous_force_and_transport_shift(FluidBody& fluid, const NeighborList& inner,
                                                std::vector<FluidContact>& contacts, const Vec2& body_acceleration) {
-  const Real alpha = fluid.options.transport_velocity_alpha;
+  const Real alpha = shift_alpha_per_step(fluid.options);
   std::optional<ViscousInteraction> viscous = prepare_viscous_interaction(fluid, contacts, body_acceleration);
   if (!viscous) return correct_transport_velocity(fluid, inner, contacts);
   if (alpha == 0.0) return sweep_with_contacts(inner, contacts, *viscous);

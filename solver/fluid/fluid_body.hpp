@@ -45,6 +45,9 @@ enum class PressureReference { Zero, Mean, Linear, Automatic };
 // How the viscous force's wall term continues the velocity into a boundary (wall_rules.hpp).
 enum class ViscousWallVelocity { Linear, Mirrored, Quadratic };
 
+// The paper's advection CFL number (Eq. 32), at which its transport-velocity shift is calibrated.
+inline constexpr Real kPaperAdvectionCfl = 0.25;
+
 struct FluidOptions {
   DensityReinitialisation density = DensityReinitialisation::Internal;
   PressureReference pressure_reference = PressureReference::Zero;
@@ -125,7 +128,7 @@ struct FluidOptions {
     bool density_relaxation = false, pressure_lattice_correction = false, refresh_pair_geometry = false,
          rest_state_at_walls = false, measured_pressure_moment = false, mirrored_wall_continuity = false;
   } left_to_flow;
-  Real advection_cfl = 0.25;            // paper Eq. 32
+  Real advection_cfl = kPaperAdvectionCfl;  // paper Eq. 32
   Real acoustic_cfl = 0.6;              // paper Eq. 33
 };
 

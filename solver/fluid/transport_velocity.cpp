@@ -4,12 +4,17 @@
 #include "fluid/shift_residue.hpp"
 #include "interaction/pair_sweep.hpp"
 
+#include <algorithm>
 #include <limits>
 
 namespace mrsph {
 
+Real shift_alpha_per_step(const FluidOptions& options) {
+  return options.transport_velocity_alpha * std::min(1.0, options.advection_cfl / kPaperAdvectionCfl);
+}
+
 void correct_transport_velocity(FluidBody& fluid, const NeighborList& inner, const std::vector<FluidContact>& contacts) {
-  const Real alpha = fluid.options.transport_velocity_alpha;
+  const Real alpha = shift_alpha_per_step(fluid.options);
   if (alpha == 0.0) return;
   shift_towards_uniform_distribution(fluid, inner, contacts, alpha, std::numeric_limits<Real>::infinity());
 }
