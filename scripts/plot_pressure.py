@@ -135,12 +135,15 @@ if os.path.exists(decay_path):
     titles = ["velocity L2 error", "kinetic energy / analytic", "pressure L2 error",
               "vortex amplitude / viscous decay exp(-2 nu k^2 t)"]
     fig, axes = plt.subplots(1, len(columns), figsize=(4.3 * len(columns), 3.8))
-    keys = sorted(set(zip(reynolds, d["resolution"], d["sound_speed_factor"])))
-    for re_, res, c in keys:
-        sel = [k for k in range(len(d["time"])) if (reynolds[k], d["resolution"][k], d["sound_speed_factor"][k]) == (re_, res, c)]
+    # Older summaries lack the advection CFL number (all the paper's 0.25).
+    cfl = d.get("advection_cfl", [0.25] * len(d["time"]))
+    keys = sorted(set(zip(reynolds, d["resolution"], d["sound_speed_factor"], cfl)))
+    for re_, res, c, cfl_ in keys:
+        sel = [k for k in range(len(d["time"])) if (reynolds[k], d["resolution"][k], d["sound_speed_factor"][k], cfl[k]) == (re_, res, c, cfl_)]
         t = [d["time"][k] for k in sel]
+        label = f"Re = {re_:g}, L/dp = {res:g}, c = {c:g} U" + ("" if cfl_ == 0.25 else f", advection CFL {cfl_:g}")
         for ax, col in zip(axes, columns):
-            ax.plot(t, [d[col][k] for k in sel], "o-", ms=3, label=f"Re = {re_:g}, L/dp = {res:g}, c = {c:g} U")
+            ax.plot(t, [d[col][k] for k in sel], "o-", ms=3, label=label)
     for ax, label in zip(axes, titles):
         ax.set_xlabel("t U / L")
         ax.set_title(label, fontsize=9)

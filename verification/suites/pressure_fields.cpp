@@ -115,6 +115,7 @@ SuiteRun run_tank(const SuiteContext& ctx, const TankCase& c, double settle, dou
 // One vortex run: particles per wavelength L/dp, sound speed factor c / U, Reynolds number.
 struct VortexCase {
   int resolution, factor, reynolds = 100;
+  double advection_cfl = kPaperAdvectionCfl;
 };
 
 struct VortexRun : VortexCase {
@@ -130,15 +131,18 @@ double effective_viscosity_ratio(const std::vector<double>& t, const std::vector
 }
 
 void run_vortex(const SuiteContext& ctx, VortexRun& out, CsvTable& decay) {
-  const std::string name = out.reynolds == 100 ? fmt::format("Taylor-Green L/dp={} c={}U", out.resolution, out.factor)
-                                               : fmt::format("Taylor-Green Re={} L/dp={} c={}U", out.reynolds, out.resolution, out.factor);
+  const bool scene_cfl = out.advection_cfl == kPaperAdvectionCfl;
+  const std::string name = (out.reynolds == 100 ? fmt::format("Taylor-Green L/dp={} c={}U", out.resolution, out.factor)
+                                                : fmt::format("Taylor-Green Re={} L/dp={} c={}U", out.reynolds, out.resolution, out.factor)) +
+                           (scene_cfl ? "" : fmt::format(" advection CFL {:g}", out.advection_cfl));
   if (ctx.log) ctx.log("pressure: " + name);
   Json samples = Json::array();
   std::vector<double> sample_times, amplitudes;
   double nu_used = NAN, k_used = NAN;
-  SceneRun run = run_scene(ctx, "taylor_green.json",
-                           {fmt::format("parameters.resolution={}", out.resolution), fmt::format("parameters.sound_speed_factor={}", out.factor),
-                            fmt::format("parameters.Re={}", out.reynolds)},
+  std::vector<std::string> overrides{fmt::format("parameters.resolution={}", out.resolution),
+                                     fmt::format("parameters.sound_speed_factor={}", out.factor), fmt::format("parameters.Re={}", out.reynolds)};
+  if (!scene_cfl) overrides.push_back(fmt::format("fluid.advection_cfl={}", out.advection_cfl));
+  SceneRun run = run_scene(ctx, "taylor_green.json", overrides,
                            [&](const LoadedScene& scene) {
                              const double U = scene.parameters.at("U"), k = scene.parameters.at("k");
                              const double nu = U * scene.parameters.at("L") / scene.parameters.at("Re");  // density 1
@@ -172,13 +176,14 @@ void run_vortex(const SuiteContext& ctx, VortexRun& out, CsvTable& decay) {
                                samples.push_back({{"time", t}, {"velocity_l2", vl2}, {"energy_ratio", ratio}, {"pressure_l2", pl2},
                                                   {"mode_amplitude", amplitude}});
                                decay.add_row({static_cast<double>(out.reynolds), static_cast<double>(out.resolution), static_cast<double>(out.factor),
-                                              t, vl2, ratio, pl2, amplitude / factor});
+                                              out.advection_cfl, t, vl2, ratio, pl2, amplitude / factor});
                              };
                              return options;
                            });
   SuiteRun& r = out.record;
   r.case_name = name;
-  r.config = {{"resolution", out.resolution}, {"sound_speed_factor", out.factor}, {"Re", out.reynolds}, {"scene", "taylor_green.json"}};
+  r.config = {{"resolution", out.resolution}, {"sound_speed_factor", out.factor}, {"Re", out.reynolds},
+              {"advection_cfl", out.advection_cfl}, {"scene", "taylor_green.json"}};
   r.cost = cost_json(run);
   r.compressibility = compressibility_record(run);
   r.diverged = run.result.divergence.has_value();
@@ -191,6 +196,20 @@ void run_vortex(const SuiteContext& ctx, VortexRun& out, CsvTable& decay) {
   }
   r.metrics["effective_viscosity_ratio"] = effective_viscosity_ratio(sample_times, amplitudes, nu_used, k_used);
   r.metrics["samples"] = samples;
+}
+
+// A viscous vortex decays at a rate that does not depend on the time step. The paper's summation,
+// once per advection step, does not keep to that: at Re = 200, L/dp = 40, c = 10 U nu_eff / nu is
+// 0.94 / 1.00 at advection CFL 0.25 / 0.125, and 1.071 / 1.052 without the reset (reports/pressure.md
+// section 36). 2 %: what the rest of the scheme's time error moves it by between these steps
+// (0.2-1.9 % without the reset at c = 10 and 20 U, L/dp = 40 and 80; 4.2 % at c = 40 U, L/dp = 40).
+// Fails today.
+void check_step_independence(SuiteSummary& summary, const std::vector<VortexRun>& runs, const VortexRun& r, const std::string& source) {
+  for (const VortexRun& paper : runs)
+    if (paper.advection_cfl == kPaperAdvectionCfl && paper.reynolds == r.reynolds && paper.resolution == r.resolution && paper.factor == r.factor)
+      check_at_most_or_missing(summary, fmt::format("{}: nu_eff / nu against advection CFL {:g}'s", r.record.case_name, kPaperAdvectionCfl),
+                               std::abs(run_metric(r.record, "effective_viscosity_ratio") - run_metric(paper.record, "effective_viscosity_ratio")),
+                               0.02, source + "; a viscous decay is independent of the time step");
 }
 
 }  // namespace
@@ -230,11 +249,12 @@ void run_taylor_green(const SuiteContext& ctx, SuiteSummary& summary) {
   // wavelength (about CFD3's D/dp), full at 40.
   const std::vector<VortexCase> plan =
       ctx.quick ? std::vector<VortexCase>{{50, 10}, {50, 20}, {50, 40}, {20, 10, 200}, {20, 20, 200}, {20, 40, 200}}
-                : std::vector<VortexCase>{{50, 10}, {100, 10}, {200, 10}, {100, 20}, {100, 40}, {40, 10, 200}, {40, 20, 200}, {40, 40, 200}};
+                : std::vector<VortexCase>{{50, 10}, {100, 10}, {200, 10}, {100, 20}, {100, 40}, {40, 10, 200}, {40, 20, 200}, {40, 40, 200},
+                                          {40, 10, 200, kPaperAdvectionCfl / 2.0}};
   std::vector<VortexRun> runs;
   for (const VortexCase& c : plan) runs.push_back(VortexRun{c, {}});
   CsvTable decay;
-  decay.columns = {"Re", "resolution", "sound_speed_factor", "time", "velocity_l2", "energy_ratio", "pressure_l2",
+  decay.columns = {"Re", "resolution", "sound_speed_factor", "advection_cfl", "time", "velocity_l2", "energy_ratio", "pressure_l2",
                    "mode_amplitude_over_viscous"};
   for (VortexRun& r : runs) run_vortex(ctx, r, decay);
   decay.write(ctx.out_dir / "taylor_green_decay.csv");
@@ -250,6 +270,7 @@ void run_taylor_green(const SuiteContext& ctx, SuiteSummary& summary) {
       if (r.factor == 10 || !ctx.quick)
         check_relative_or_missing(summary, fmt::format("{}: effective viscosity / viscosity", r.record.case_name),
                                   run_metric(r.record, "effective_viscosity_ratio"), 1.0, 0.05, source);
+      if (r.advection_cfl != kPaperAdvectionCfl) check_step_independence(summary, runs, r, source);
       continue;
     }
     // Quick: c = 10 and 20 U; c = 40 U is reported beside them (its summation-density pressure noise
