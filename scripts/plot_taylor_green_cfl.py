@@ -1,9 +1,10 @@
 """Figure of reports/pressure.md section 36: the Taylor-Green vortex's effective viscosity (Re = 200) against the
 advection CFL number, with the paper's density summation once per advection step, without any reset, with the
-summation relaxed by 0.05 per step, and with the paper's shift per step, at L/dp = 40 and 80, c = 10, 20, 40 U.
+summation relaxed by 0.05 per step, with the paper's shift per step, and with the pair geometry refreshed at each
+acoustic step, at L/dp = 40 and 80, c = 10, 20, 40 U.
 
 Reads DIRECTORY/diagnosis/taylor_green_advection_cfl.csv (run, L_over_dp, c_over_U, advection_cfl, density,
-shift, nu_eff_over_nu); writes DIRECTORY/pressure_taylor_green_cfl.png.
+shift, nu_eff_over_nu, pair_geometry); writes DIRECTORY/pressure_taylor_green_cfl.png.
 Usage: /usr/bin/python3 scripts/plot_taylor_green_cfl.py reports/pressure
 """
 import csv
@@ -25,12 +26,17 @@ def series(**match):
 this_build = "scaled below CFL 0.25 (this build)"
 paper_reset = "summation each advection step (the paper's)"
 no_reset = "continuity only (no reset)"
+cached = "cached per advection step (the paper's)"
+refreshed = "refreshed at each acoustic step"
 fig, axes = plt.subplots(1, 2, figsize=(11, 4.4), sharey=True, constrained_layout=True)
 for ax, resolution in zip(axes, ["40", "80"]):
     for c, color in [("10", "C0"), ("20", "C1"), ("40", "C2")]:
         for density, style, label in [(paper_reset, "o-", "summation reset each step"), (no_reset, "s--", "no reset")]:
-            x, y = series(L_over_dp=resolution, c_over_U=c, density=density, shift=this_build)
+            x, y = series(L_over_dp=resolution, c_over_U=c, density=density, shift=this_build, pair_geometry=cached)
             ax.plot(x, y, style, color=color, ms=4, label=f"c = {c} U, {label}")
+    for density, style, label in [(paper_reset, "D-", "reset each step"), (no_reset, "D--", "no reset")]:
+        x, y = series(L_over_dp=resolution, c_over_U="10", density=density, pair_geometry=refreshed)
+        ax.plot(x, y, style, color="C3", ms=3, lw=0.8, label=f"c = 10 U, pair geometry refreshed, {label}")
     if resolution == "40":
         x, y = series(L_over_dp="40", c_over_U="10", density="summation relaxed by 0.05 per step")
         ax.plot(x, y, "^:", color="C4", ms=4, label="c = 10 U, summation relaxed by 0.05 per step")
