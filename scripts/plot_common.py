@@ -47,3 +47,11 @@ def save(fig, directory, name):
     os.replace(tmp, path)  # atomic: never a half-written figure
     plt.close(fig)
     print(f"figure: {name}")
+
+
+def log_x_axis(ax, ticks, labels, base=10):
+    """A logarithmic x axis with exactly these ticks and labels."""
+    ax.set_xscale("log", base=base)
+    ax.minorticks_off()
+    ax.set_xticks(ticks)
+    ax.set_xticklabels(labels)

@@ -8,7 +8,7 @@ Usage: /usr/bin/python3 scripts/plot_effective_viscosity.py reports/pressure
 import csv
 import os
 
-from plot_common import plt, save, suite_dir
+from plot_common import log_x_axis, plt, save, suite_dir
 
 directory = suite_dir()
 with open(os.path.join(directory, "diagnosis", "taylor_green_effective_viscosity.csv")) as f:
@@ -22,10 +22,7 @@ for ax, resolution in zip(axes, ["20", "40"]):
         if points:
             ax.plot(*zip(*points), "o-", ms=4, label=variant)
     ax.axhline(1.0, color="k", lw=0.8, ls="--")
-    ax.set_xscale("log")
-    ax.minorticks_off()
-    ax.set_xticks([10, 20, 40, 80])
-    ax.set_xticklabels(["10", "20", "40", "80"])
+    log_x_axis(ax, [10, 20, 40, 80], ["10", "20", "40", "80"])
     ax.set_xlabel("c / U")
     ax.set_title(f"Taylor-Green, Re = 200, L/dp = {resolution}", fontsize=9)
     ax.grid(alpha=0.3)

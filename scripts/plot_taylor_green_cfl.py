@@ -10,7 +10,7 @@ Usage: /usr/bin/python3 scripts/plot_taylor_green_cfl.py reports/pressure
 import csv
 import os
 
-from plot_common import plt, save, suite_dir
+from plot_common import log_x_axis, plt, save, suite_dir
 
 directory = suite_dir()
 with open(os.path.join(directory, "diagnosis", "taylor_green_advection_cfl.csv")) as f:
@@ -43,9 +43,7 @@ for ax, resolution in zip(axes, ["40", "80"]):
         x, y = series(L_over_dp="40", c_over_U="10", density=paper_reset, shift="0.25 per step (the paper's)")
         ax.plot(x, y, "x-", color="0.5", ms=5, label="c = 10 U, reset each step, the paper's shift per step")
     ax.axhline(1.0, color="k", lw=0.6)
-    ax.set_xscale("log", base=2)
-    ax.set_xticks([0.03125, 0.0625, 0.125, 0.25])
-    ax.set_xticklabels(["0.031", "0.0625", "0.125", "0.25"])
+    log_x_axis(ax, [0.03125, 0.0625, 0.125, 0.25], ["0.031", "0.0625", "0.125", "0.25"], base=2)
     ax.set_xlabel("advection CFL number (the paper's: 0.25)")
     ax.set_title(f"Taylor-Green vortex, Re = 200, L/dp = {resolution}, h = 1.3 dp, to t = 1", fontsize=9)
     ax.legend(fontsize=6.5)
