@@ -4,7 +4,7 @@ summation relaxed by 0.05 per step, with the paper's shift per step, and with th
 acoustic step, at L/dp = 40 and 80, c = 10, 20, 40 U.
 
 Reads DIRECTORY/diagnosis/taylor_green_advection_cfl.csv (run, L_over_dp, c_over_U, advection_cfl, density,
-shift, nu_eff_over_nu, pair_geometry); writes DIRECTORY/pressure_taylor_green_cfl.png.
+shift, nu_eff_over_nu, pair_geometry, acoustic_cfl); writes DIRECTORY/pressure_taylor_green_cfl.png.
 Usage: /usr/bin/python3 scripts/plot_taylor_green_cfl.py reports/pressure
 """
 import csv
@@ -18,6 +18,7 @@ with open(os.path.join(directory, "diagnosis", "taylor_green_advection_cfl.csv")
 
 
 def series(**match):
+    match.setdefault("acoustic_cfl", "0.6")  # the paper's; rows at other acoustic steps are in the table only
     points = sorted((float(r["advection_cfl"]), float(r["nu_eff_over_nu"])) for r in rows
                     if all(r[key] == value for key, value in match.items()))
     return list(zip(*points))
