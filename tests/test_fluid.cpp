@@ -29,18 +29,21 @@ std::string periodic_box(const std::string& fluid_extra = "", const std::string&
     "end_time": 0.2)" + extra + "}";
 }
 
-// The fluid on 0 < y < 1 between a floor and a lid, periodic in x, viscosity 0.3, with the viscous
-// wall rule `rule` (fluid.viscous_wall_velocity).
-std::string walled_channel(const std::string& rule) {
+// The fluid on 0 < y < 1 between a floor and a lid, periodic in x, viscosity 0.3; fluid_extra: more
+// fluid keys (",\"key\": value ...").
+std::string walled_channel_with(const std::string& fluid_extra) {
   return R"json({
     "parameters": {"dp": 0.05},
     "domain": {"lower": [0, -0.25], "upper": [1, 1.25], "periodic": [true, false]},
     "fluid": {"dp": "dp", "region": {"rectangle": {"lower": [0, 0], "upper": [1, 1]}},
-              "density": 1, "sound_speed": 10, "viscosity": 0.3, "viscous_wall_velocity": ")json" + rule + R"json("},
+              "density": 1, "sound_speed": 10, "viscosity": 0.3)json" + fluid_extra + R"json(},
     "walls": [{"name": "floor", "dp": "dp", "region": {"rectangle": {"lower": [0, -0.2], "upper": [1, 0]}}},
               {"name": "lid", "dp": "dp", "region": {"rectangle": {"lower": [0, 1], "upper": [1, 1.2]}}}],
     "end_time": 1})json";
 }
+
+// The same channel with the viscous wall rule `rule` (fluid.viscous_wall_velocity).
+std::string walled_channel(const std::string& rule) { return walled_channel_with(R"(, "viscous_wall_velocity": ")" + rule + "\""); }
 
 Vec2 fluid_momentum(const Simulation& sim) {
   const FluidParticles& f = sim.fluid().particles;
@@ -605,14 +608,7 @@ TEST_CASE("The measured pressure moment is the lattice's on a lattice and follow
 TEST_CASE("The viscous force and the shift in one sweep give the bits of the two sweeps", "[fluid]") {
   // A disordered fluid sheared over a floor: every part of both interactions runs (inner pairs, the
   // viscous term's after-inner scaling, the wall pairs with their per-pair forces, the shift).
-  const std::string scene = R"json({
-    "parameters": {"dp": 0.05},
-    "domain": {"lower": [0, -0.25], "upper": [1, 1.25], "periodic": [true, false]},
-    "fluid": {"dp": "dp", "region": {"rectangle": {"lower": [0, 0], "upper": [1, 1]}},
-              "density": 1, "sound_speed": 10, "viscosity": 0.3, "transport_velocity_alpha": 0.25},
-    "walls": [{"name": "floor", "dp": "dp", "region": {"rectangle": {"lower": [0, -0.2], "upper": [1, 0]}}},
-              {"name": "lid", "dp": "dp", "region": {"rectangle": {"lower": [0, 1], "upper": [1, 1.2]}}}],
-    "end_time": 1})json";
+  const std::string scene = walled_channel_with(R"(, "transport_velocity_alpha": 0.25)");
   LoadedScene apart = scene_from(scene), together = scene_from(scene);
   for (LoadedScene* s : {&apart, &together}) {
     FluidParticles& f = s->simulation->fluid().particles;
