@@ -88,6 +88,28 @@ TEST_CASE("A run restarted from a checkpoint equals the uninterrupted run bitwis
   std::filesystem::remove_all(dir);
 }
 
+TEST_CASE("A kept checkpoint written after its series have grown is the checkpoint of the moment it was kept",
+          "[checkpoint]") {
+  LoadedScene s = load_scene(kScene, {});
+  const RunResult r = run_simulation(*s.simulation, *s.schedule, s.observers, options_for(s));
+  REQUIRE(r.completed);
+  // The runner keeps the last good state this way every few steps, and writes it only on divergence.
+  RunnerState then = runner_state(r);
+  for (ObserverSeries& series : then.series) {
+    REQUIRE(series.time.size() >= 3);
+    series.time.resize(2);
+    series.values.resize(2);
+  }
+  KeptCheckpoint kept;
+  keep_checkpoint(s.document, s.file, *s.simulation, then, kept);
+  CHECK(assemble_checkpoint(kept, r.series) == state_bytes(s, then));
+  // Kept again into the same buffers: the later moment, whole series.
+  keep_checkpoint(s.document, s.file, *s.simulation, runner_state(r), kept);
+  CHECK(assemble_checkpoint(kept, r.series) == state_bytes(s, runner_state(r)));
+  // Series shorter than those kept are not the ones it was kept from.
+  CHECK_THROWS_AS(assemble_checkpoint(kept, then.series), std::logic_error);
+}
+
 TEST_CASE("A checkpoint from another scene is refused with a clear message", "[checkpoint]") {
   const auto dir = std::filesystem::temp_directory_path() / "mrsph_test_checkpoint_mismatch";
   std::filesystem::create_directories(dir);

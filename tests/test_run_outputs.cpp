@@ -1,10 +1,12 @@
 #include "io/vtp_writer.hpp"
 #include "observers/snapshot.hpp"
 #include "scene_fixture.hpp"
+#include "run/checkpoint.hpp"
 #include "run/runner.hpp"
 
 #include <catch2/catch.hpp>
 
+#include <filesystem>
 #include <sstream>
 
 using namespace mrsph;
@@ -26,8 +28,13 @@ TEST_CASE("A diverging run is stopped and reported with time, step, body and par
   doc["fluid"]["acoustic_cfl"] = 5.0;
   doc["fluid"]["advection_cfl"] = 5.0;
   LoadedScene s = build_scene(doc, "unstable.json");
+  const auto dir = std::filesystem::temp_directory_path() / "mrsph_test_diverging_run";
+  std::filesystem::create_directories(dir);
   RunOptions options;
   options.end_time = 0.5;
+  options.last_good_path = dir / "last_good.bin";
+  options.scene_document = &s.document;
+  options.scene_file = s.file;
   const RunResult r = run_simulation(*s.simulation, *s.schedule, s.observers, options);
   REQUIRE_FALSE(r.completed);
   REQUIRE(r.divergence);
@@ -37,6 +44,15 @@ TEST_CASE("A diverging run is stopped and reported with time, step, body and par
   CHECK(r.divergence->time < 0.5);
   CHECK(r.divergence->step >= 0);
   CHECK_FALSE(r.divergence->reason.empty());
+  // The last good state, kept every few steps, is written: a checkpoint of a time before the divergence.
+  REQUIRE(r.last_good_written == options.last_good_path);
+  const CheckpointHeader header = read_checkpoint_header(options.last_good_path);
+  CHECK(header.time < r.divergence->time);
+  LoadedScene again = build_scene(header.scene_document, header.scene_file);
+  RunnerState resume;
+  restore_checkpoint(options.last_good_path, *again.simulation, resume);
+  CHECK(again.simulation->time == header.time);
+  std::filesystem::remove_all(dir);
 }
 
 TEST_CASE("A stable run of the same scene completes", "[run]") {

@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace mrsph {
@@ -20,6 +21,9 @@ inline constexpr bool kRawCopyable = std::is_trivially_copyable_v<T> || std::is_
 
 class BinaryWriter {
  public:
+  BinaryWriter() = default;
+  // Writes into `reuse`, emptied first: its capacity is kept (no allocation when the size repeats).
+  explicit BinaryWriter(std::string reuse) : buffer_(std::move(reuse)) { buffer_.clear(); }
   template <class T>
   void value(const T& v) {
     static_assert(kRawCopyable<T>);
@@ -32,11 +36,19 @@ class BinaryWriter {
   }
   template <class T>
   void array(const std::vector<T>& a) {
-    static_assert(kRawCopyable<T>);
-    value<std::uint64_t>(a.size());
-    if (!a.empty()) buffer_.append(reinterpret_cast<const char*>(a.data()), a.size() * sizeof(T));
+    array(a.data(), a.size());
   }
+  // The first n elements at `data`, stored as an array of n.
+  template <class T>
+  void array(const T* data, std::size_t n) {
+    static_assert(kRawCopyable<T>);
+    value<std::uint64_t>(n);
+    if (n > 0) buffer_.append(reinterpret_cast<const char*>(data), n * sizeof(T));
+  }
+  // Bytes another writer wrote, as they are.
+  void raw(const std::string& bytes) { buffer_.append(bytes); }
   const std::string& bytes() const { return buffer_; }
+  std::string take() && { return std::move(buffer_); }
 
  private:
   std::string buffer_;

@@ -4,7 +4,9 @@
 #include "io/binary_stream.hpp"
 
 #include <fstream>
+#include <stdexcept>
 #include <sstream>
+#include <utility>
 
 namespace mrsph {
 
@@ -63,9 +65,11 @@ void load_impulse_record(BinaryReader& r, FluidContact& c) {
 
 }  // namespace
 
-std::string serialise_checkpoint(const Json& scene_document, const std::string& scene_file, const Simulation& sim,
-                                 const RunnerState& runner) {
-  BinaryWriter w;
+namespace {
+
+// Everything before the observers' series: the scene, the clock and the runner's output state.
+void write_scene_clock_and_runner(BinaryWriter& w, const Json& scene_document, const std::string& scene_file,
+                                  const Simulation& sim, const RunnerState& runner) {
   for (char c : kMagic) w.value(c);
   w.value(kVersion);
   w.text(scene_document.dump());
@@ -83,15 +87,24 @@ std::string serialise_checkpoint(const Json& scene_document, const std::string& 
     w.value(e->time);
     w.value(e->position);
   }
-  w.value<std::uint64_t>(runner.series.size());
-  for (const ObserverSeries& s : runner.series) {
+}
+
+// The observers' series, each cut to its first rows[k] rows.
+void write_series(BinaryWriter& w, const std::vector<ObserverSeries>& series, const std::vector<std::size_t>& rows) {
+  w.value<std::uint64_t>(series.size());
+  for (std::size_t k = 0; k < series.size(); ++k) {
+    const ObserverSeries& s = series[k];
     w.text(s.name);
-    w.array(s.time);
+    w.array(s.time.data(), rows[k]);
     std::vector<Real> flat;
-    for (const auto& row : s.values) flat.insert(flat.end(), row.begin(), row.end());
+    for (std::size_t row = 0; row < rows[k]; ++row) flat.insert(flat.end(), s.values[row].begin(), s.values[row].end());
     w.value<std::uint64_t>(s.columns.size());
     w.array(flat);
   }
+}
+
+// Every particle array the next steps read, and the boundaries' and contacts' records.
+void write_particle_state(BinaryWriter& w, const Simulation& sim) {
   Saver save{w};
   w.value<std::uint8_t>(sim.has_fluid());
   if (sim.has_fluid()) {
@@ -113,7 +126,39 @@ std::string serialise_checkpoint(const Json& scene_document, const std::string& 
   }
   w.value<std::uint64_t>(sim.solids().size());
   for (const SolidBody& solid : sim.solids()) SolidParticles::for_each_state_field(solid.particles, save);
-  return w.bytes();
+}
+
+}  // namespace
+
+void keep_checkpoint(const Json& scene_document, const std::string& scene_file, const Simulation& sim,
+                     const RunnerState& runner, KeptCheckpoint& kept) {
+  BinaryWriter before(std::move(kept.before_series));
+  write_scene_clock_and_runner(before, scene_document, scene_file, sim, runner);
+  kept.before_series = std::move(before).take();
+  kept.series_rows.clear();
+  for (const ObserverSeries& s : runner.series) kept.series_rows.push_back(s.time.size());
+  BinaryWriter after(std::move(kept.after_series));
+  write_particle_state(after, sim);
+  kept.after_series = std::move(after).take();
+}
+
+std::string assemble_checkpoint(const KeptCheckpoint& kept, const std::vector<ObserverSeries>& series) {
+  bool grown = kept.series_rows.size() == series.size();
+  for (std::size_t k = 0; grown && k < series.size(); ++k)
+    grown = kept.series_rows[k] <= series[k].time.size() && kept.series_rows[k] <= series[k].values.size();
+  if (!grown) throw std::logic_error("assemble_checkpoint: the observer series are not those kept, grown");
+  BinaryWriter w;
+  w.raw(kept.before_series);
+  write_series(w, series, kept.series_rows);
+  w.raw(kept.after_series);
+  return std::move(w).take();
+}
+
+std::string serialise_checkpoint(const Json& scene_document, const std::string& scene_file, const Simulation& sim,
+                                 const RunnerState& runner) {
+  KeptCheckpoint kept;
+  keep_checkpoint(scene_document, scene_file, sim, runner, kept);
+  return assemble_checkpoint(kept, runner.series);
 }
 
 void write_checkpoint(const std::filesystem::path& path, const std::string& bytes) { write_file_atomically(path, bytes); }

@@ -13,12 +13,28 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace mrsph {
 
-// In-memory form, so the runner can keep the last good state cheaply and write it on demand.
+// In-memory form, so the runner can keep the last good state and write it on demand.
 std::string serialise_checkpoint(const Json& scene_document, const std::string& scene_file, const Simulation& sim,
                                  const RunnerState& runner);
+
+// A checkpoint kept in memory without the observers' series, which only grow: the bytes before and
+// after them and each series' row count at the time it was kept. Keeping one every few steps then
+// costs the particle state, not the run's whole history (FSI2 case III: 4 % of its wall time when
+// the series were copied each time, reports/performance.md section 24).
+struct KeptCheckpoint {
+  std::string before_series, after_series;
+  std::vector<std::size_t> series_rows;
+};
+// Keeps the checkpoint of this moment in `kept`, reusing its buffers.
+void keep_checkpoint(const Json& scene_document, const std::string& scene_file, const Simulation& sim,
+                     const RunnerState& runner, KeptCheckpoint& kept);
+// The checkpoint as serialise_checkpoint gave it when it was kept, from the series as they are now
+// (the same series, grown since). Throws std::logic_error if they are not.
+std::string assemble_checkpoint(const KeptCheckpoint& kept, const std::vector<ObserverSeries>& series);
 void write_checkpoint(const std::filesystem::path& path, const std::string& bytes);
 
 struct CheckpointHeader {

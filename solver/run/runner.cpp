@@ -77,7 +77,7 @@ class RunLoop {
     next_checkpoint_ = sim_.time + options_.checkpoint_interval;
     next_wall_checkpoint_ = options_.checkpoint_wall_interval_s;
     next_progress_ = options_.progress_interval_s;
-    if (keeps_last_good()) last_good_ = serialise();
+    if (keeps_last_good()) keep_last_good();
   }
 
   bool finished() const { return reached(sim_.time, options_.end_time); }
@@ -109,7 +109,7 @@ class RunLoop {
     }
     handle_samples();
     if (keeps_last_good() && ++steps_since_last_good_ >= options_.last_good_interval) {
-      last_good_ = serialise();
+      keep_last_good();
       steps_since_last_good_ = 0;
     }
     if (options_.stop_requested && options_.stop_requested->load()) {
@@ -125,7 +125,7 @@ class RunLoop {
   void diverged(const DivergenceError& e) {
     result_.divergence = e.info();
     if (!keeps_last_good()) return;
-    write_checkpoint(options_.last_good_path, last_good_);
+    write_checkpoint(options_.last_good_path, assemble_checkpoint(last_good_, state_.series));
     result_.last_good_written = options_.last_good_path;
   }
 
@@ -146,6 +146,7 @@ class RunLoop {
   bool keeps_last_good() const { return !options_.last_good_path.empty(); }
   double wall_seconds() const { return std::chrono::duration<double>(Clock::now() - wall_start_).count(); }
   std::string serialise() const { return serialise_checkpoint(*options_.scene_document, options_.scene_file, sim_, state_); }
+  void keep_last_good() { keep_checkpoint(*options_.scene_document, options_.scene_file, sim_, state_, last_good_); }
 
   void record() {
     for (std::size_t k = 0; k < observers_.size(); ++k) {
@@ -219,7 +220,7 @@ class RunLoop {
   std::optional<SnapshotWriter> snapshots_;
   Real next_checkpoint_ = 0.0;
   double next_wall_checkpoint_ = 0.0, next_progress_ = 0.0;
-  std::string last_good_;
+  KeptCheckpoint last_good_;  // the series as they are when it is written, cut to its rows
   long long steps_since_last_good_ = 0;
 };
 
