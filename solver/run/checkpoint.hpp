@@ -23,8 +23,8 @@ std::string serialise_checkpoint(const Json& scene_document, const std::string& 
 
 // A checkpoint kept in memory without the observers' series, which only grow: the bytes before and
 // after them and each series' row count at the time it was kept. Keeping one every few steps then
-// costs the particle state, not the run's whole history (FSI2 case III: 4 % of its wall time when
-// the series were copied each time, reports/performance.md section 24).
+// costs the particle state, not the run's whole history, whose copies grew with the run's length
+// (FSI2 case III to t = 200: about 1 % of the run, reports/performance.md section 24).
 struct KeptCheckpoint {
   std::string before_series, after_series;
   std::vector<std::size_t> series_rows;
