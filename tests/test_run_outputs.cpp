@@ -1,7 +1,7 @@
+#include "checkpoint_fixture.hpp"
 #include "io/vtp_writer.hpp"
 #include "observers/snapshot.hpp"
 #include "scene_fixture.hpp"
-#include "run/checkpoint.hpp"
 #include "run/runner.hpp"
 
 #include <catch2/catch.hpp>
@@ -48,10 +48,8 @@ TEST_CASE("A diverging run is stopped and reported with time, step, body and par
   REQUIRE(r.last_good_written == options.last_good_path);
   const CheckpointHeader header = read_checkpoint_header(options.last_good_path);
   CHECK(header.time < r.divergence->time);
-  LoadedScene again = build_scene(header.scene_document, header.scene_file);
-  RunnerState resume;
-  restore_checkpoint(options.last_good_path, *again.simulation, resume);
-  CHECK(again.simulation->time == header.time);
+  const Restored restored = restore_from(options.last_good_path);
+  CHECK(restored.scene.simulation->time == header.time);
   std::filesystem::remove_all(dir);
 }
 
