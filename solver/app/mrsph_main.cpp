@@ -43,6 +43,13 @@ const char* viscous_wall_velocity_description(mrsph::ViscousWallVelocity rule) {
   }
 }
 
+// When the acoustic passes evaluate their pairs' geometry: the pressure pass's and the continuity pass's.
+std::string pair_geometry_description(const mrsph::FluidOptions& o) {
+  const auto when = [](bool refreshed) { return refreshed ? "at each acoustic step" : "cached per advection step"; };
+  return fmt::format("in the pressure pass {}, in the continuity pass {}", when(o.refresh_pair_geometry),
+                     when(o.refresh_divergence_geometry));
+}
+
 // The transport-velocity shift's coefficient per advection step, and alpha where the CFL scaled it.
 std::string transport_shift_description(const mrsph::FluidOptions& o) {
   if (o.transport_velocity_alpha == 0.0) return "off";
@@ -80,7 +87,7 @@ void print_scene(const mrsph::LoadedScene& scene) {
     const bool free_surface = f.options.density == mrsph::DensityReinitialisation::FreeSurface;
     const bool continuity = f.options.density == mrsph::DensityReinitialisation::None;
     fmt::print("           {} fluid: density by {}; pressure forces from {}; Riemann dissipation in continuity {}, in"
-               " momentum {}; delta-SPH diffusion {}; pressure pass's pair geometry {}; viscous wall velocity {};"
+               " momentum {}; delta-SPH diffusion {}; pair geometry {}; viscous wall velocity {};"
                " continuity's wall velocity {}; transport-velocity shift {}; emptiest kernel support {:.0f} % filled\n",
                free_surface ? "free-surface" : sim.open_boundaries.empty() ? "confined" : "open (inlet/outlet)",
                continuity                               ? std::string("the continuity equation")
@@ -93,7 +100,7 @@ void print_scene(const mrsph::LoadedScene& scene) {
                                                                                     : "on, hydrostatically balanced",
                f.riemann.momentum ? "on" : "off",
                f.options.delta_sph > 0.0 ? fmt::format("delta {:g}", f.options.delta_sph) : std::string("off"),
-               f.options.refresh_pair_geometry ? "at each acoustic step" : "cached per advection step",
+               pair_geometry_description(f.options),
                viscous_wall_velocity_description(f.options.viscous_wall_velocity),
                f.options.mirrored_wall_continuity ? "mirrored (the paper's)" : "the boundary's (the summation's derivative)",
                transport_shift_description(f.options),

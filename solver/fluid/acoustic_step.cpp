@@ -191,11 +191,15 @@ struct PressureInteraction {
 
 // drho/dt += rho_i div v (Eq. 27 and its wall term); f^d (the Riemann momentum dissipation). Before,
 // where non-zero: r += position_dt v; after: rho += density_dt drho/dt (no particle reads another's
-// position or density here).
+// position or density here). kRefresh: the pair geometry at the positions after that move
+// (FluidOptions::refresh_divergence_geometry; the fluid's displacements measured before the sweep, a
+// moving boundary's as the pressure pass measured them), else as cached.
+template <bool kRefresh>
 struct DivergenceAndDissipation {
   struct Sum {
     Vec2 v;    // v_i, read once (as in PressureInteraction)
     Real vol;  // V_i
+    Vec2 moved;  // r_i - r_i at the list build, after this pass's move (kRefresh)
     Real divergence = 0.0;
     Vec2 dissipation = Vec2::Zero();
   };
@@ -204,6 +208,7 @@ struct DivergenceAndDissipation {
     const Vec2Array& vbar;
     const Vec2Array& normal;
     Vec2Array& pair_force;
+    const FluidContact& contact;
   };
 
   FluidParticles& f;
@@ -211,13 +216,20 @@ struct DivergenceAndDissipation {
   std::vector<FluidContact>& contacts;
   Real position_dt, density_dt;
   bool mirrored_wall_continuity;
+  const NeighborList& inner_list;
+  const Vec2Array& moved;  // FluidBody::moved_since_list_build (kRefresh)
 
   Sum begin(std::size_t i) const {
     if (position_dt != 0.0) f.pos[i] += position_dt * f.vel[i];
-    return {f.vel[i], f.vol[i]};
+    return {f.vel[i], f.vol[i], kRefresh ? moved[i] : Vec2::Zero()};
   }
 
-  void inner(Sum& s, std::size_t i, const Neighbor& n) const {
+  void inner(Sum& s, std::size_t i, const Neighbor& cached) const {
+    if constexpr (kRefresh) inner_pair(s, i, inner_list.moved(cached, s.moved, moved[cached.j]).as_neighbor());
+    else inner_pair(s, i, cached);
+  }
+
+  void inner_pair(Sum& s, std::size_t, const Neighbor& n) const {
     const Real u = (s.v - f.vel[n.j]).dot(n.e);
     s.divergence += f.vol[n.j] * u * n.dW;
     if (riemann.momentum) s.dissipation += (s.vol * f.vol[n.j] * riemann.momentum_coefficient(u) * n.dW) * n.e;
@@ -225,10 +237,20 @@ struct DivergenceAndDissipation {
 
   Side boundary(std::size_t c) const {
     const FluidContact& contact = contacts[c];
-    return {*contact.boundary.vol, *contact.boundary.vel_ave, *contact.boundary.normal, contacts[c].pair_dissipation_force};
+    return {*contact.boundary.vol, *contact.boundary.vel_ave, *contact.boundary.normal,
+            contacts[c].pair_dissipation_force, contact};
   }
 
-  void contact(Sum& s, std::size_t, const Side& b, Index k, const Neighbor& n) const {
+  void contact(Sum& s, std::size_t i, const Side& b, Index k, const Neighbor& cached) const {
+    if constexpr (kRefresh) {
+      const Vec2 boundary_moved = b.contact.boundary.pos == nullptr ? Vec2::Zero() : b.contact.boundary_moved[cached.j];
+      contact_pair(s, i, b, k, b.contact.pairs.moved(cached, s.moved, boundary_moved).as_neighbor());
+    } else {
+      contact_pair(s, i, b, k, cached);
+    }
+  }
+
+  void contact_pair(Sum& s, std::size_t, const Side& b, Index k, const Neighbor& n) const {
     s.divergence += b.vol[n.j] * wall_continuity_velocity_difference(s.v, b.vbar[n.j], mirrored_wall_continuity).dot(n.e) * n.dW;
     if (!riemann.momentum) return;
     const Vec2 difference = wall_velocity_difference(s.v, b.vbar[n.j]);
@@ -246,13 +268,20 @@ struct DivergenceAndDissipation {
   }
 };
 
-// r - r at the list build, of the fluid's particles and of the moving boundaries' (refresh_pair_geometry).
-void measure_displacements_since_list_build(FluidBody& fluid, std::vector<FluidContact>& contacts) {
+// r + position_dt v - r at the list build of the fluid's particles: where the continuity pass will have
+// moved them (refresh_divergence_geometry).
+void measure_fluid_displacements_after_move(FluidBody& fluid, Real position_dt) {
   const FluidParticles& f = fluid.particles;
   fluid.moved_since_list_build.resize(f.size());
   parallel_for_each(f.size(), [&](std::size_t i) {
-    fluid.moved_since_list_build[i] = f.pos[i] - fluid.positions_at_list_build[i];
+    fluid.moved_since_list_build[i] = f.pos[i] + position_dt * f.vel[i] - fluid.positions_at_list_build[i];
   }, kGrainSimpleLoop);
+}
+
+// r - r at the list build, of the fluid's particles and of the moving boundaries' (refresh_pair_geometry,
+// refresh_divergence_geometry).
+void measure_displacements_since_list_build(FluidBody& fluid, std::vector<FluidContact>& contacts) {
+  measure_fluid_displacements_after_move(fluid, 0.0);
   for (FluidContact& c : contacts) {
     if (c.boundary.pos == nullptr) continue;
     c.boundary_moved.resize(c.boundary.pos->size());
@@ -277,12 +306,12 @@ void compute_pressure_interaction(FluidBody& fluid, const NeighborList& inner, s
     else
       sweep(PressureInteraction<kRefresh, PairPressure::Plain>{fluid, fluid.particles, contacts, body_acceleration, kick_dt, inner});
   };
-  if (fluid.options.refresh_pair_geometry) {
+  if (fluid.options.refresh_pair_geometry || fluid.options.refresh_divergence_geometry)
     measure_displacements_since_list_build(fluid, contacts);
+  if (fluid.options.refresh_pair_geometry)
     sweep_in_form(std::true_type{});
-  } else {
+  else
     sweep_in_form(std::false_type{});
-  }
 }
 
 void kick(FluidBody& fluid, Real dt, const Vec2& body_acceleration) {
@@ -296,9 +325,19 @@ void add_velocity_divergence_and_dissipation(FluidBody& fluid, const NeighborLis
   const RiemannDissipation& riemann = fluid.riemann;
   for (FluidContact& c : contacts)
     c.pair_dissipation_force.assign(riemann.momentum ? c.pairs.pair_count() : 0, Vec2::Zero());
-  sweep_with_contacts(inner, contacts,
-                      DivergenceAndDissipation{fluid.particles, riemann, contacts, position_dt, density_dt,
-                                               fluid.options.mirrored_wall_continuity}, sharing);
+  const auto sweep = [&](auto refresh) {
+    sweep_with_contacts(inner, contacts,
+                        DivergenceAndDissipation<decltype(refresh)::value>{
+                            fluid.particles, riemann, contacts, position_dt, density_dt,
+                            fluid.options.mirrored_wall_continuity, inner, fluid.moved_since_list_build},
+                        sharing);
+  };
+  if (fluid.options.refresh_divergence_geometry) {
+    measure_fluid_displacements_after_move(fluid, position_dt);
+    sweep(std::true_type{});
+  } else {
+    sweep(std::false_type{});
+  }
   for (FluidContact& c : contacts) {
     c.boundary_dissipation_reaction.assign(c.pairs_of_boundary.size(), Vec2::Zero());
     if (riemann.momentum) accumulate_boundary_reaction(c, c.pair_dissipation_force, c.boundary_dissipation_reaction);

@@ -101,6 +101,13 @@ struct FluidOptions {
   // advection step. Under a positive pressure the cached geometry feeds energy into the particle
   // motion at a rate that grows with p and with the advection step (reports/pressure.md section 9).
   bool refresh_pair_geometry = false;
+  // The continuity pass's velocity divergence (and the Riemann momentum dissipation) at the positions of
+  // each acoustic step too; off: cached, as the paper's. With the summation each advection step the
+  // divergence's geometry does not enter (the density is replaced); with the continuity equation
+  // carrying the density, the cached divergence is dissipative at first order in the advection step
+  // and the cached pressure force anti-dissipative by about as much: the two on the same current
+  // geometry give the Taylor-Green vortex 0.3-2.4 % of nu at every step (reports/pressure.md section 38).
+  bool refresh_divergence_geometry = false;
   // The wall rule's pressure (wall_rules.hpp) continues the hydrostatic balance's rest state rho0 g
   // into the dummy particles whole and clips only the rest of the acceleration; off: the paper's
   // code, which clips the whole continuation, so that a dummy above a fluid particle (under a body,
@@ -148,8 +155,9 @@ struct FluidBody {
   Vec2 non_periodic_axes = Vec2::Ones();  // 1 along an axis that is not periodic (set by the simulation)
   Mat2Array gradient_correction;  // B_i of FluidOptions::pressure_gradient_correction
   Vec2Array density_gradient;     // <grad rho>^L of the delta-SPH diffusion, each acoustic step
-  // With options.refresh_pair_geometry: positions at the list build, and each particle's displacement
-  // since then (set before each pressure pass).
+  // With options.refresh_pair_geometry or refresh_divergence_geometry: positions at the list build,
+  // and each particle's displacement since then (set before each pressure pass, and before each
+  // continuity pass with refresh_divergence_geometry).
   Vec2Array positions_at_list_build, moved_since_list_build;
 
   FluidBody(std::string body_name, Real spacing, Real h_over_dp)

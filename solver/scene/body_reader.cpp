@@ -85,6 +85,7 @@ void read_fluid_options(const SceneNode& node, FluidOptions& o) {
   o.viscous_lattice_correction = node.flag_or("viscous_lattice_correction", o.viscous_lattice_correction);
   o.pressure_lattice_correction = node.flag_or("pressure_lattice_correction", o.pressure_lattice_correction);
   o.refresh_pair_geometry = node.flag_or("refresh_pair_geometry", o.refresh_pair_geometry);
+  o.refresh_divergence_geometry = node.flag_or("refresh_divergence_geometry", o.refresh_divergence_geometry);
   o.rest_state_at_walls = node.flag_or("rest_state_at_walls", o.rest_state_at_walls);
   o.measured_pressure_moment = node.flag_or("measured_pressure_moment", o.measured_pressure_moment);
   o.pressure_gradient_correction = node.flag_or("pressure_gradient_correction", o.pressure_gradient_correction);

@@ -113,7 +113,7 @@ class Simulation {
   std::size_t rebuilds_since_sort_ = 0;  // rebuilds so far; every kSortInterval-th one reorders
   std::vector<CellGrid> wall_grids_;      // the fixed walls' cell lists for the fluid's contacts, built once
   void build_pair_lists();
-  // The fluid's and the solids' positions at the build, for refresh_pair_geometry.
+  // The fluid's and the solids' positions at the build, for refresh_pair_geometry and refresh_divergence_geometry.
   void record_positions_at_list_build();
   // Fluid options left to the scene (DensityReinitialisation and PressureReference Automatic):
   // a free surface where gravity acts along an axis that is not periodic, else a confined fluid.
