@@ -49,6 +49,12 @@ struct CachedGeometry {
   Vec2 r_ij() const { return n.r * Vec2(n.e); }
   const Neighbor& neighbor() const { return n; }
 };
+// A fluid-boundary pair at the current positions: the fluid particle moved by moved_i since the list
+// build, the boundary particle by its own displacement (none for a boundary that never moves).
+MovedPair contact_pair_now(const FluidContact& c, const Neighbor& cached, const Vec2& moved_i) {
+  return c.pairs.moved(cached, moved_i, c.boundary.pos == nullptr ? Vec2::Zero() : c.boundary_moved[cached.j]);
+}
+
 struct MovedGeometry {
   MovedPair m;
   Index j() const { return m.j; }
@@ -137,7 +143,7 @@ struct PressureInteraction {
     return {inner_list.moved(cached, s.moved, fluid.moved_since_list_build[cached.j])};
   }
   MovedGeometry current_contact_pair(const Sum& s, const FluidContact& c, const Neighbor& cached) const {
-    return {c.pairs.moved(cached, s.moved, c.boundary.pos == nullptr ? Vec2::Zero() : c.boundary_moved[cached.j])};
+    return {contact_pair_now(c, cached, s.moved)};
   }
 
   void inner(Sum& s, std::size_t i, const Neighbor& cached) const {
@@ -242,12 +248,8 @@ struct DivergenceAndDissipation {
   }
 
   void contact(Sum& s, std::size_t i, const Side& b, Index k, const Neighbor& cached) const {
-    if constexpr (kRefresh) {
-      const Vec2 boundary_moved = b.contact.boundary.pos == nullptr ? Vec2::Zero() : b.contact.boundary_moved[cached.j];
-      contact_pair(s, i, b, k, b.contact.pairs.moved(cached, s.moved, boundary_moved).as_neighbor());
-    } else {
-      contact_pair(s, i, b, k, cached);
-    }
+    if constexpr (kRefresh) contact_pair(s, i, b, k, contact_pair_now(b.contact, cached, s.moved).as_neighbor());
+    else contact_pair(s, i, b, k, cached);
   }
 
   void contact_pair(Sum& s, std::size_t, const Side& b, Index k, const Neighbor& n) const {
