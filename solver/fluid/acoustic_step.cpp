@@ -308,8 +308,7 @@ void compute_pressure_interaction(FluidBody& fluid, const NeighborList& inner, s
     else
       sweep(PressureInteraction<kRefresh, PairPressure::Plain>{fluid, fluid.particles, contacts, body_acceleration, kick_dt, inner});
   };
-  if (fluid.options.refresh_pair_geometry || fluid.options.refresh_divergence_geometry)
-    measure_displacements_since_list_build(fluid, contacts);
+  if (fluid.options.refreshes_pair_geometry()) measure_displacements_since_list_build(fluid, contacts);
   if (fluid.options.refresh_pair_geometry)
     sweep_in_form(std::true_type{});
   else

@@ -137,6 +137,10 @@ struct FluidOptions {
   } left_to_flow;
   Real advection_cfl = kPaperAdvectionCfl;  // paper Eq. 32
   Real acoustic_cfl = 0.6;              // paper Eq. 33
+
+  // Whether an acoustic pass evaluates pairs at the current positions, so that the positions at each
+  // list build must be recorded.
+  bool refreshes_pair_geometry() const { return refresh_pair_geometry || refresh_divergence_geometry; }
 };
 
 struct FluidBody {

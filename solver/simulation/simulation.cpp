@@ -288,8 +288,7 @@ void Simulation::build_pair_lists() {
     if (contact.boundary_dissipation_reaction.size() != boundary_count)
       contact.boundary_dissipation_reaction.assign(boundary_count, Vec2::Zero());
   }, /*grain=*/1, Sharing::Balanced);
-  if (fluid.options.refresh_pair_geometry || fluid.options.refresh_divergence_geometry)
-    record_positions_at_list_build();
+  if (fluid.options.refreshes_pair_geometry()) record_positions_at_list_build();
 }
 
 void Simulation::record_positions_at_list_build() {
