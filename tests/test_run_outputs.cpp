@@ -89,3 +89,22 @@ TEST_CASE("VTP snapshots are well-formed PolyData with one value per point and c
   }
   CHECK(arrays == 5);  // points, velocity, pressure, density, vorticity
 }
+
+TEST_CASE("The fluid option max_advection_step bounds the advection step", "[run]") {
+  // The criterion's step here is about 0.01 (dp 0.05, CFL 0.25, speed 1 plus the viscous and
+  // acoustic criteria); bounded at 0.002, a run to t = 0.05 takes 25 steps.
+  auto steps_to = [](const char* bound) {
+    Json doc = Json::parse(kChannel);
+    if (bound) doc["fluid"]["max_advection_step"] = Json::parse(bound);
+    LoadedScene s = build_scene(doc, "bounded.json");
+    RunOptions options;
+    options.end_time = 0.05;
+    const RunResult r = run_simulation(*s.simulation, *s.schedule, s.observers, options);
+    REQUIRE(r.completed);
+    return r.steps.advection;
+  };
+  CHECK(steps_to(nullptr) <= 10);
+  const long long bounded = steps_to("0.002");
+  CHECK(bounded >= 25);
+  CHECK(bounded <= 26);  // the last may be a sliver where the sum of 25 falls short of 0.05 by round-off
+}

@@ -75,6 +75,14 @@ std::string pressure_forces_description(const mrsph::Simulation& sim) {
   return s;
 }
 
+void print_schedule(const mrsph::LoadedScene& scene) {
+  const mrsph::Simulation& sim = *scene.simulation;
+  fmt::print("schedule   {}   end time {:g}", scene.schedule->name(), scene.run.end_time);
+  if (sim.has_fluid() && std::isfinite(sim.fluid().options.max_advection_step))
+    fmt::print("   advection step at most {:g}", sim.fluid().options.max_advection_step);
+  fmt::print("\n");
+}
+
 void print_scene(const mrsph::LoadedScene& scene) {
   const mrsph::Simulation& sim = *scene.simulation;
   fmt::print("scene      {} ({})\n", scene.name, scene.file);
@@ -132,7 +140,7 @@ void print_scene(const mrsph::LoadedScene& scene) {
                  mrsph::kDampingStepLimit);
     fmt::print("\n");
   }
-  fmt::print("schedule   {}   end time {:g}\n", scene.schedule->name(), scene.run.end_time);
+  print_schedule(scene);
 }
 
 std::string duration_text(double s) {

@@ -11,6 +11,7 @@
 #include "particles/boundary_view.hpp"
 #include "particles/fluid_particles.hpp"
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -136,6 +137,9 @@ struct FluidOptions {
          rest_state_at_walls = false, measured_pressure_moment = false, mirrored_wall_continuity = false;
   } left_to_flow;
   Real advection_cfl = kPaperAdvectionCfl;  // paper Eq. 32
+  // An upper bound on the advection step, for scenes whose observers must resolve what is faster
+  // than the flow (an acoustic pulse). Infinite: the criterion alone.
+  Real max_advection_step = std::numeric_limits<Real>::infinity();
   Real acoustic_cfl = 0.6;              // paper Eq. 33
 
   // Whether an acoustic pass evaluates pairs at the current positions, so that the positions at each

@@ -16,7 +16,7 @@ Real advection_time_step(const FluidBody& fluid, const Vec2& body_acceleration) 
   }, 0.0, kGrainSimpleLoop);
   const Real nu = fluid.material.viscosity / fluid.material.rho0();
   const Real speed = std::max({std::sqrt(speed2), fluid.options.reference_velocity, nu / h});
-  return fluid.options.advection_cfl * h / speed;
+  return std::min(fluid.options.advection_cfl * h / speed, fluid.options.max_advection_step);
 }
 
 Real acoustic_time_step(const FluidBody& fluid) {

@@ -106,6 +106,7 @@ void read_fluid_options(const SceneNode& node, FluidOptions& o) {
                     !node.has("measured_pressure_moment"),
                     wall_continuity == "automatic"};
   o.advection_cfl = node.positive_or("advection_cfl", o.advection_cfl);
+  o.max_advection_step = node.positive_or("max_advection_step", o.max_advection_step);
   o.acoustic_cfl = node.positive_or("acoustic_cfl", o.acoustic_cfl);
 }
 
