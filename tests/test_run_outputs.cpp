@@ -90,6 +90,38 @@ TEST_CASE("VTP snapshots are well-formed PolyData with one value per point and c
   CHECK(arrays == 5);  // points, velocity, pressure, density, vorticity
 }
 
+TEST_CASE("How often a run is watched does not change it: outputs and samples never shorten a step", "[run]") {
+  // The advection step here is about 0.01 (CFL 0.25, dp 0.05, speed 1 plus the viscous and acoustic
+  // criteria); outputs and samples ten times as dense used to cut every step short (reports/pressure.md
+  // section 39: the vortex's viscosity moved by 8 % with the output interval).
+  auto run = [](Real observer_interval, int samples, std::vector<Real>* sampled) {
+    LoadedScene s = scene_from(kChannel);
+    RunOptions options;
+    options.end_time = 0.2;
+    options.observer_interval = observer_interval;
+    for (int k = 1; k <= samples; ++k) options.sample_times.push_back(0.001 * k);
+    options.on_sample = [sampled](const Simulation& sim) { sampled->push_back(sim.time); };
+    const RunResult r = run_simulation(*s.simulation, *s.schedule, s.observers, options);
+    REQUIRE(r.completed);
+    return std::make_pair(s.simulation->fluid().particles, r.steps.advection);
+  };
+  std::vector<Real> none, dense;
+  const auto [plain, plain_steps] = run(0.0, 0, &none);
+  const auto [watched, watched_steps] = run(0.0013, 199, &dense);
+  CHECK(watched_steps == plain_steps);
+  REQUIRE(watched.size() == plain.size());
+  bool identical = true;
+  for (std::size_t i = 0; i < plain.size(); ++i)
+    identical = identical && watched.pos[i] == plain.pos[i] && watched.vel[i] == plain.vel[i] && watched.rho[i] == plain.rho[i];
+  CHECK(identical);
+  // Each sample is taken once, after the first step at or past its time, so within one step of it.
+  REQUIRE(dense.size() == 199);
+  for (std::size_t k = 0; k < dense.size(); ++k) {
+    CHECK(dense[k] >= 0.001 * (k + 1) - 1e-12);
+    CHECK(dense[k] < 0.001 * (k + 1) + 0.2 / plain_steps * 2.0);
+  }
+}
+
 TEST_CASE("The fluid option max_advection_step bounds the advection step", "[run]") {
   // The criterion's step here is about 0.01 (dp 0.05, CFL 0.25, speed 1 plus the viscous and
   // acoustic criteria); bounded at 0.002, a run to t = 0.05 takes 25 steps.

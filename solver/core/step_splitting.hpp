@@ -25,8 +25,8 @@ inline SplitStep split_remaining(Real remaining, Real criterion) {
 
 // The paper's Algorithm 1 for the acoustic steps of an advection step Dt: full steps of the
 // criterion, each at most Dt (an explicit viscous step may have set Dt below the acoustic one),
-// until their sum reaches Dt; so the last may pass Dt by less than one step, never `limit` (an
-// output time or the end: the step that reaches it is cut to land on it).
+// until their sum reaches Dt; so the last may pass Dt by less than one step, never `limit` (the
+// end time: the step that reaches it is cut to land on it).
 inline SplitStep full_step_towards(Real elapsed, Real Dt, Real limit, Real criterion) {
   const Real size = std::min(criterion, Dt);
   if (elapsed + size >= limit * (1.0 - 1e-12)) return {limit - elapsed, true};
@@ -36,8 +36,8 @@ inline SplitStep full_step_towards(Real elapsed, Real Dt, Real limit, Real crite
 // Full acoustic steps that stay inside the advection step Dt: the step is the criterion (at most
 // what remains of Dt), and the last is the one after which another of its size would pass Dt; so
 // the advection step ends at or before Dt, and neither criterion is exceeded
-// (reports/performance.md sections 3 and 19). An advection step cut to reach `limit` (an output
-// time or the end) is split equally instead, so that it lands on the limit.
+// (reports/performance.md sections 3 and 19). An advection step cut to reach `limit` (the end
+// time) is split equally instead, so that it lands on the limit.
 inline SplitStep full_step_inside(Real elapsed, Real Dt, Real limit, Real criterion) {
   if (limit <= Dt * (1.0 + 1e-12)) return split_remaining(limit - elapsed, criterion);
   const Real size = std::min(criterion, Dt - elapsed);

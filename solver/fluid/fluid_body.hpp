@@ -138,7 +138,8 @@ struct FluidOptions {
   } left_to_flow;
   Real advection_cfl = kPaperAdvectionCfl;  // paper Eq. 32
   // An upper bound on the advection step, for scenes whose observers must resolve what is faster
-  // than the flow (an acoustic pulse). Infinite: the criterion alone.
+  // than the flow (an acoustic pulse: outputs are taken between advection steps, never by shortening
+  // one). Infinite: the criterion alone.
   Real max_advection_step = std::numeric_limits<Real>::infinity();
   Real acoustic_cfl = 0.6;              // paper Eq. 33
 

@@ -82,14 +82,13 @@ class RunLoop {
 
   bool finished() const { return reached(sim_.time, options_.end_time); }
 
-  // The end of the next advection step: the end time, or an output or sample time before it.
+  // The longest the next advection step may be: up to the end time. Output, sample and checkpoint
+  // times never shorten a step (each is taken after the first step that reaches it), so how often
+  // a run is watched does not change its results.
   Real next_stop() const {
-    Real target = options_.end_time;
-    if (options_.observer_interval > 0.0) target = std::min(target, state_.next_observation);
-    if (snapshots_) target = std::min(target, state_.next_snapshot);
-    if (next_sample_ < samples_.size()) target = std::min(target, samples_[next_sample_]);
+    const Real target = options_.end_time;
     if (!(target > sim_.time))
-      throw std::logic_error(fmt::format("run_simulation: the next stop, t = {}, is not after the current time {}", target, sim_.time));
+      throw std::logic_error(fmt::format("run_simulation: the end time, t = {}, is not after the current time {}", target, sim_.time));
     return target;
   }
 

@@ -1,6 +1,8 @@
-// Runs a simulation to its end time: advances the schedule, lands exactly on output and sample
-// times, records observers, writes snapshots, reports progress through a callback (physics code
-// never prints), and turns a divergence into a recorded outcome instead of a crash.
+// Runs a simulation to its end time: advances the schedule, records observers, writes snapshots
+// and calls back for samples after the first advection step at or past each of their times (they
+// never shorten a step, so how often a run is watched does not change its results; only the last
+// step is cut, to end on the end time), reports progress through a callback (physics code never
+// prints), and turns a divergence into a recorded outcome instead of a crash.
 #pragma once
 
 #include "observers/compressibility_monitor.hpp"
@@ -52,7 +54,8 @@ struct RunOptions {
   Real observer_interval = 0.0;  // 0: every advection step
   Real snapshot_interval = 0.0;  // 0: no snapshots
   std::filesystem::path snapshot_dir;  // where VTP files go (required for snapshots)
-  std::vector<Real> sample_times;      // extra exact times at which on_sample is called
+  std::vector<Real> sample_times;      // on_sample is called after the first step at or past each
+                                       // (once per time, with the simulation's own time)
   std::function<void(const Simulation&)> on_sample;
   std::function<void(const RunProgress&)> on_progress;
   double progress_interval_s = 1.0;
@@ -60,7 +63,7 @@ struct RunOptions {
   // Checkpoints (checkpoint.hpp), written to checkpoint_path at the end of the first advection step
   // after each checkpoint_interval of simulated time and each checkpoint_wall_interval_s of wall
   // time (0: never), and when *stop_requested becomes true (the run then stops: interrupted).
-  // Checkpoints never shorten a step, so they do not change the results.
+  // Checkpoints, like outputs, never shorten a step, so they do not change the results.
   std::filesystem::path checkpoint_path;
   Real checkpoint_interval = 0.0;
   double checkpoint_wall_interval_s = 0.0;

@@ -1,5 +1,5 @@
 // Time-integration schedules, selected by name in a scene. Each advances a Simulation by one
-// advection step (at most `max_step`, so outputs land on exact times) and returns its size.
+// advection step (at most `max_step`: the runner passes the time left to the end) and returns its size.
 //   multi_step_position_verlet   the paper's method (Algorithm 1): dual-criteria fluid steps, and
 //                                kappa solid sub-steps per acoustic step, all position-based Verlet
 //   single_step_position_verlet  the same, with one step for both: the acoustic step is the smaller
