@@ -82,14 +82,13 @@ class RunLoop {
 
   bool finished() const { return reached(sim_.time, options_.end_time); }
 
-  // The longest the next advection step may be: up to the end time. Output, sample and checkpoint
-  // times never shorten a step (each is taken after the first step that reaches it), so how often
-  // a run is watched does not change its results.
-  Real next_stop() const {
-    const Real target = options_.end_time;
-    if (!(target > sim_.time))
-      throw std::logic_error(fmt::format("run_simulation: the end time, t = {}, is not after the current time {}", target, sim_.time));
-    return target;
+  // The longest the next advection step may be: the time left to the end. Output, sample and
+  // checkpoint times never shorten a step (each is taken after the first step that reaches it), so
+  // how often a run is watched does not change its results.
+  Real longest_step() const {
+    if (!(options_.end_time > sim_.time))
+      throw std::logic_error(fmt::format("run_simulation: the end time, t = {}, is not after the current time {}", options_.end_time, sim_.time));
+    return options_.end_time - sim_.time;
   }
 
   // Records, snapshots, samples and the last good state after a step; false when a stop was
@@ -231,7 +230,7 @@ RunResult run_simulation(Simulation& sim, Schedule& schedule, const std::vector<
   run.start();
   try {
     while (!run.finished()) {
-      schedule.advance(sim, run.next_stop() - sim.time);
+      schedule.advance(sim, run.longest_step());
       if (!run.after_step()) break;
     }
     return run.finish(true);
