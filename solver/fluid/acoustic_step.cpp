@@ -280,10 +280,9 @@ void measure_fluid_displacements_after_move(FluidBody& fluid, Real position_dt) 
   }, kGrainSimpleLoop);
 }
 
-// r - r at the list build, of the fluid's particles and of the moving boundaries' (refresh_pair_geometry,
-// refresh_divergence_geometry).
-void measure_displacements_since_list_build(FluidBody& fluid, std::vector<FluidContact>& contacts) {
-  measure_fluid_displacements_after_move(fluid, 0.0);
+// r - r at the list build of the moving boundaries' particles (refresh_pair_geometry,
+// refresh_divergence_geometry: the solids move beside the continuity pass, so both read them here).
+void measure_boundary_displacements_since_list_build(std::vector<FluidContact>& contacts) {
   for (FluidContact& c : contacts) {
     if (c.boundary.pos == nullptr) continue;
     c.boundary_moved.resize(c.boundary.pos->size());
@@ -308,11 +307,13 @@ void compute_pressure_interaction(FluidBody& fluid, const NeighborList& inner, s
     else
       sweep(PressureInteraction<kRefresh, PairPressure::Plain>{fluid, fluid.particles, contacts, body_acceleration, kick_dt, inner});
   };
-  if (fluid.options.refreshes_pair_geometry()) measure_displacements_since_list_build(fluid, contacts);
-  if (fluid.options.refresh_pair_geometry)
+  if (fluid.options.refreshes_pair_geometry()) measure_boundary_displacements_since_list_build(contacts);
+  if (fluid.options.refresh_pair_geometry) {
+    measure_fluid_displacements_after_move(fluid, 0.0);
     sweep_in_form(std::true_type{});
-  else
+  } else {
     sweep_in_form(std::false_type{});
+  }
 }
 
 void kick(FluidBody& fluid, Real dt, const Vec2& body_acceleration) {

@@ -165,8 +165,8 @@ struct FluidBody {
   Mat2Array gradient_correction;  // B_i of FluidOptions::pressure_gradient_correction
   Vec2Array density_gradient;     // <grad rho>^L of the delta-SPH diffusion, each acoustic step
   // With options.refresh_pair_geometry or refresh_divergence_geometry: positions at the list build,
-  // and each particle's displacement since then (set before each pressure pass, and before each
-  // continuity pass with refresh_divergence_geometry).
+  // and each particle's displacement since then (set before each pressure pass with
+  // refresh_pair_geometry, and before each continuity pass with refresh_divergence_geometry).
   Vec2Array positions_at_list_build, moved_since_list_build;
 
   FluidBody(std::string body_name, Real spacing, Real h_over_dp)
