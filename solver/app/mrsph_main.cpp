@@ -59,6 +59,15 @@ std::string transport_shift_description(const mrsph::FluidOptions& o) {
                      o.transport_velocity_alpha, o.advection_cfl, mrsph::kPaperAdvectionCfl);
 }
 
+// The summation's relaxation per advection step, and the option's where the CFL scaled it.
+std::string density_reset_description(const mrsph::FluidOptions& o) {
+  const mrsph::Real per_step = mrsph::density_relaxation_per_step(o);
+  if (per_step == 1.0) return "summation each advection step";
+  if (per_step == o.density_relaxation) return fmt::format("summation each advection step, relaxed by {:g}", per_step);
+  return fmt::format("summation each advection step, relaxed by {:g} ({:g} scaled by the advection CFL {:g} / {:g})", per_step,
+                     o.density_relaxation, o.advection_cfl, mrsph::kPaperAdvectionCfl);
+}
+
 // What the fluid's pressure forces are measured from, divided by and continued into the walls with.
 std::string pressure_forces_description(const mrsph::Simulation& sim) {
   const auto& f = sim.fluid();
@@ -99,9 +108,7 @@ void print_scene(const mrsph::LoadedScene& scene) {
                " continuity's wall velocity {}; transport-velocity shift {}; emptiest kernel support {:.0f} % filled\n",
                free_surface ? "free-surface" : sim.open_boundaries.empty() ? "confined" : "open (inlet/outlet)",
                continuity                               ? std::string("the continuity equation")
-               : f.options.density_relaxation == 1.0 ? std::string("summation each advection step")
-                                                        : fmt::format("summation each advection step, relaxed by {:g}",
-                                                                      f.options.density_relaxation),
+                                                        : density_reset_description(f.options),
                pressure_forces_description(sim),
                !f.riemann.continuity ? "off"
                : f.riemann.rest_pressure_gradient(sim.body_force.constant).isZero() ? "on"

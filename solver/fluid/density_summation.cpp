@@ -124,6 +124,10 @@ Real summation_density(const FluidBody& fluid, const NeighborList& inner, const 
 
 }  // namespace
 
+Real density_relaxation_per_step(const FluidOptions& options) {
+  return options.density_relaxation * options.paper_step_fraction();
+}
+
 void reinitialise_density(FluidBody& fluid, const NeighborList& inner, const std::vector<FluidContact>& contacts,
                           Real relaxation) {
   FluidParticles& f = fluid.particles;

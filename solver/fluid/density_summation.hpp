@@ -16,6 +16,15 @@ namespace mrsph {
 void reinitialise_density(FluidBody& fluid, const NeighborList& inner, const std::vector<FluidContact>& contacts,
                           Real relaxation);
 
+// The relaxation of one advection step's re-initialisation: density_relaxation times
+// FluidOptions::paper_step_fraction(). The paper's reset replaces the density once per step, at its
+// CFL of 0.25. Each reset is a small pressure kick where the summation and the carried density
+// differ; at a quarter of the step four resets per unit time stirred a pressure-driven channel four
+// times as hard (transverse velocity 0.0057 against 0.0012 U) and lowered its flow rate by 1.2 %,
+// and raised the Taylor-Green vortex's viscosity as the step shrank. Scaled, both are independent of
+// the step (reports/pressure.md section 41). At CFL 0.25 and above it is density_relaxation.
+Real density_relaxation_per_step(const FluidOptions& options);
+
 // The smallest rho_sum / rho0 over the fluid: 1 where every particle's kernel support is filled by
 // fluid, walls or solids; 0.79 for the top row of a lattice under a free surface, 0.74-0.84 next to
 // a lattice cut by a slanted or curved wall (h = 1.3 dp): voids that the initial relaxation fills.

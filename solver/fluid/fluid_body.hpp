@@ -11,6 +11,7 @@
 #include "particles/boundary_view.hpp"
 #include "particles/fluid_particles.hpp"
 
+#include <algorithm>
 #include <limits>
 #include <string>
 #include <vector>
@@ -146,6 +147,13 @@ struct FluidOptions {
   // Whether an acoustic pass evaluates pairs at the current positions, so that the positions at each
   // list build must be recorded.
   bool refreshes_pair_geometry() const { return refresh_pair_geometry || refresh_divergence_geometry; }
+
+  // One advection step at this CFL as a fraction of the paper's step (CFL 0.25; the step is CFL h / U),
+  // at most 1. The paper calibrated two once-per-step operations at its step: the transport-velocity
+  // shift and the summation's reset of the density. Each is scaled by this fraction, so that below
+  // CFL 0.25 its effect per unit time is the paper's, not 0.25 / CFL times it (reports/pressure.md
+  // sections 35 and 41); at and above 0.25 the paper's per step is kept, bit for bit.
+  Real paper_step_fraction() const { return std::min(1.0, advection_cfl / kPaperAdvectionCfl); }
 };
 
 struct FluidBody {

@@ -10,7 +10,7 @@
 namespace mrsph {
 
 Real shift_alpha_per_step(const FluidOptions& options) {
-  return options.transport_velocity_alpha * std::min(1.0, options.advection_cfl / kPaperAdvectionCfl);
+  return options.transport_velocity_alpha * options.paper_step_fraction();
 }
 
 void correct_transport_velocity(FluidBody& fluid, const NeighborList& inner, const std::vector<FluidContact>& contacts) {

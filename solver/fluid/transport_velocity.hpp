@@ -16,7 +16,7 @@ namespace mrsph {
 void correct_transport_velocity(FluidBody& fluid, const NeighborList& inner, const std::vector<FluidContact>& contacts);
 
 // The coefficient of the shift above in one advection step: transport_velocity_alpha times
-// min(1, advection_cfl / 0.25). The paper's shift is a displacement per step, calibrated at its
+// FluidOptions::paper_step_fraction(), min(1, advection_cfl / 0.25). The paper's shift is a displacement per step, calibrated at its
 // advection CFL of 0.25; the step is CFL h / U, so at a smaller CFL the same displacement per step
 // would act more often, and the shift per unit time would grow as 1 / CFL. Scaled, the shift per
 // unit time is the paper's whatever CFL is chosen below 0.25 (a pressure-driven open channel's

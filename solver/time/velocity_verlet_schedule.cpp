@@ -43,7 +43,7 @@ Real VelocityVerletSchedule::advance(Simulation& sim, Real max_step) {
   const Real t0 = sim.time;
   const Real Dt = std::min(advection_time_step(fluid, sim.fluid_body_acceleration(t0)), max_step);
 
-  reinitialise_density(fluid, inner, contacts, fluid.options.density_relaxation);
+  reinitialise_density(fluid, inner, contacts, density_relaxation_per_step(fluid.options));
   sim.impose_boundary_states(0.0);
   compute_viscous_force_and_transport_shift(fluid, inner, contacts, sim.fluid_body_acceleration(t0));
   for (SolidBody& solid : sim.solids()) update_solid_normals(solid);
