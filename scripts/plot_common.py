@@ -40,6 +40,12 @@ def read_csv(path):
     return {name: [float(r[k]) for r in data] for k, name in enumerate(header)}
 
 
+def read_diagnosis_rows(directory, name):
+    """The rows of DIRECTORY/diagnosis/NAME (a CSV with a header line), as dicts of strings."""
+    with open(os.path.join(directory, "diagnosis", name)) as f:
+        return list(csv.DictReader(f))
+
+
 def save(fig, directory, name):
     path = os.path.join(directory, name)
     tmp = path + ".tmp.png"

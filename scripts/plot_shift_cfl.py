@@ -8,17 +8,13 @@ DIRECTORY/diagnosis/poiseuille_shift_cfl_along.csv (run, x, pressure, snapshots)
 writes DIRECTORY/pressure_shift_cfl.png.
 Usage: /usr/bin/python3 scripts/plot_shift_cfl.py reports/pressure
 """
-import csv
-import os
-
-from plot_common import plt, save, suite_dir
+from plot_common import read_diagnosis_rows, plt, save, suite_dir
 
 directory = suite_dir()
 
 
 def read(name):
-    with open(os.path.join(directory, "diagnosis", name)) as f:
-        return list(csv.DictReader(f))
+    return read_diagnosis_rows(directory, name)
 
 
 inlet, along = read("poiseuille_shift_cfl_inlet.csv"), read("poiseuille_shift_cfl_along.csv")

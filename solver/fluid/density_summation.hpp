@@ -19,9 +19,9 @@ void reinitialise_density(FluidBody& fluid, const NeighborList& inner, const std
 // The relaxation of one advection step's re-initialisation: density_relaxation times
 // FluidOptions::paper_step_fraction(). The paper's reset replaces the density once per step, at its
 // CFL of 0.25. Each reset is a small pressure kick where the summation and the carried density
-// differ; at a quarter of the step four resets per unit time stirred a pressure-driven channel four
-// times as hard (transverse velocity 0.0057 against 0.0012 U) and lowered its flow rate by 1.2 %,
-// and raised the Taylor-Green vortex's viscosity as the step shrank. Scaled, both are independent of
+// differ; at a quarter of the step four resets per unit time gave a pressure-driven channel five
+// times the particles' noise (transverse velocity 0.0057 against 0.0012 U) and 1.2 % less flow, and
+// raised the Taylor-Green vortex's viscosity as the step shrank. Scaled, both are independent of
 // the step (reports/pressure.md section 41). At CFL 0.25 and above it is density_relaxation.
 Real density_relaxation_per_step(const FluidOptions& options);
 
