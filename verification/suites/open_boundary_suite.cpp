@@ -145,9 +145,10 @@ SuiteRun run_poiseuille(const SuiteContext& ctx, int resolution, bool corrected)
 // flow_rate_error_mean: the flow rate averaged over t = 50-60. Both ends hold the pressure, so the
 // channel rings at its acoustic modes (f = n c / 2 L), and with the particles' noise one snapshot
 // scatters by 0.1-0.5 points (std over t = 50-60, reports/pressure.md section 41); the mean over
-// five periods of the fundamental (ten at c = 20 U) is what a steady flow rate is. linear: the linear pressure reference (an option,
-// reports/pressure.md section 30) at c = 20 U, where the datum's start is a 1.25 % compression (at
-// c = 10 U its 5 % wave sloshes undamped and the run turns tensile-unstable).
+// five periods of the fundamental (ten at c = 20 U) is what a steady flow rate is.
+// linear: the linear pressure reference (an option, reports/pressure.md section 30) at c = 20 U,
+// where the datum's start is a 1.25 % compression (at c = 10 U its 5 % wave sloshes undamped and
+// the run turns tensile-unstable).
 // advection_cfl: the fluid's advection CFL number (the scene's is the paper's 0.25).
 SuiteRun run_poiseuille_datum(const SuiteContext& ctx, double datum, bool linear = false, double advection_cfl = kPaperAdvectionCfl) {
   const bool scene_cfl = advection_cfl == kPaperAdvectionCfl;
