@@ -50,22 +50,26 @@ std::string pair_geometry_description(const mrsph::FluidOptions& o) {
                      when(o.refresh_divergence_geometry));
 }
 
+// Where a once-per-step coefficient was scaled by FluidOptions::paper_step_fraction(), the option's
+// value and the scaling; else nothing.
+std::string cfl_scaling_note(mrsph::Real per_step, mrsph::Real option, const mrsph::FluidOptions& o) {
+  if (per_step == option) return "";
+  return fmt::format(" ({:g} scaled by the advection CFL {:g} / {:g})", option, o.advection_cfl, mrsph::kPaperAdvectionCfl);
+}
+
 // The transport-velocity shift's coefficient per advection step, and alpha where the CFL scaled it.
 std::string transport_shift_description(const mrsph::FluidOptions& o) {
   if (o.transport_velocity_alpha == 0.0) return "off";
   const mrsph::Real per_step = mrsph::shift_alpha_per_step(o);
-  if (per_step == o.transport_velocity_alpha) return fmt::format("alpha {:g} per advection step", per_step);
-  return fmt::format("alpha {:g} per advection step ({:g} scaled by the advection CFL {:g} / {:g})", per_step,
-                     o.transport_velocity_alpha, o.advection_cfl, mrsph::kPaperAdvectionCfl);
+  return fmt::format("alpha {:g} per advection step{}", per_step, cfl_scaling_note(per_step, o.transport_velocity_alpha, o));
 }
 
 // The summation's relaxation per advection step, and the option's where the CFL scaled it.
 std::string density_reset_description(const mrsph::FluidOptions& o) {
   const mrsph::Real per_step = mrsph::density_relaxation_per_step(o);
   if (per_step == 1.0) return "summation each advection step";
-  if (per_step == o.density_relaxation) return fmt::format("summation each advection step, relaxed by {:g}", per_step);
-  return fmt::format("summation each advection step, relaxed by {:g} ({:g} scaled by the advection CFL {:g} / {:g})", per_step,
-                     o.density_relaxation, o.advection_cfl, mrsph::kPaperAdvectionCfl);
+  return fmt::format("summation each advection step, relaxed by {:g}{}", per_step,
+                     cfl_scaling_note(per_step, o.density_relaxation, o));
 }
 
 // What the fluid's pressure forces are measured from, divided by and continued into the walls with.
